@@ -84,7 +84,7 @@ int main(int, char*[])
   PCH_CHECK(FailsMentioning("solid foo\nfacet normal 0 0 1\n", "MeshVersionFormatted"));
   PCH_CHECK(FailsMentioning(valid.substr(0, valid.find("1 2 3 4 0") + 5), "Tetrahedra"));
   PCH_CHECK(FailsMentioning(valid.substr(0, valid.find("3 1 1 0")), "Vertices: declares 12"));
-  PCH_CHECK(FailsMentioning(valid.substr(0, valid.find("11 12 0")), "inside hexahedron 1 of 1"));
+  PCH_CHECK(FailsMentioning(valid.substr(0, valid.find("11 12 0")), "Hexahedra: "));
   PCH_CHECK(FailsMentioning(Replace(valid, "Tetrahedra\n1\n", "Tetrahedra\n2\n"), "tetrahedron 2"));
   PCH_CHECK(FailsMentioning(Replace(valid, "Tetrahedra\n1\n", "Tetrahedra\n99999999\n"), "declares"));
   PCH_CHECK(FailsMentioning(Replace(valid, "1 2 3 4 0", "1 2 3 40 0"), "references vertex 40"));
