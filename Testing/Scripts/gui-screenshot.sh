@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Opens the ParaView GUI under Xvfb with the plugin loaded and a model open, and saves a
+# screenshot of the whole screen: what a user sees. Usage: gui-screenshot.sh <model> <out.png>
+set -euo pipefail
+source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build_dir="${POLYCUBEHEX_BUILD:-$source_dir/build}"
+model="$(realpath "${1:-$source_dir/Data/rockerarm.mesh}")"
+output="$(realpath -m "${2:-$build_dir/gui-screenshot.png}")"
+plugin="$build_dir/lib/paraview-5.11/plugins/PolycubeHex/PolycubeHex.so"
+work="$(mktemp -d)"
+
+cat > "$work/load.py" <<PY
+from paraview.simple import *
+LoadPlugin("$plugin", remote=False, ns=globals())
+source = OpenDataFile("$model")
+display = Show(source)
+display.SetRepresentationType("Surface With Edges")
+ResetCamera()
+Render()
+PY
+cat > "$work/run.sh" <<SH
+paraview --script="$work/load.py" > "$work/paraview.log" 2>&1 &
+sleep "\${POLYCUBEHEX_GUI_WAIT:-20}"
+xwd -root -silent > "$work/screen.xwd"
+convert "$work/screen.xwd" "$output"
+kill %1 || true
+SH
+xvfb-run -a -s "-screen 0 1400x900x24" bash "$work/run.sh"
+echo "wrote $output"
