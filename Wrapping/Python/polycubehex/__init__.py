@@ -11,6 +11,7 @@ pvpython and in any Python that imports ParaView's ``vtkmodules``::
 import vtkmodules.vtkCommonCore  # noqa: F401
 import vtkmodules.vtkCommonDataModel  # noqa: F401
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
+import vtkmodules.vtkIOCore  # noqa: F401
 
 from .PolycubeHexFilters import *  # noqa: F401,F403
 
