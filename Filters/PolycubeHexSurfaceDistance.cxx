@@ -53,7 +53,9 @@ double Uniform(std::mt19937& random)
 
 /// `count` points uniformly distributed by area on the triangles of `surface`, #count by 3
 /// coordinates in one flat vector. Returns false when the surface has no area.
-bool SampleByArea(vtkPolyData* surface, vtkIdType count, std::mt19937& random,
+bool SampleByArea(vtkPolyData* surface,
+  vtkIdType count,
+  std::mt19937& random,
   std::vector<double>& samples)
 {
   vtkCellArray* polys = surface->GetPolys();
@@ -115,18 +117,21 @@ std::vector<double> DistancesTo(const std::vector<double>& samples, vtkPolyData*
   const vtkIdType count = static_cast<vtkIdType>(samples.size() / 3);
   std::vector<double> distances(count);
   vtkSMPThreadLocalObject<vtkGenericCell> cells;
-  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
-    vtkGenericCell* cell = cells.Local();
-    for (vtkIdType s = begin; s < end; ++s)
+  vtkSMPTools::For(0,
+    count,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      double closest[3];
-      vtkIdType cellId = -1;
-      int subId = 0;
-      double dist2 = 0.0;
-      locator->FindClosestPoint(samples.data() + 3 * s, closest, cell, cellId, subId, dist2);
-      distances[s] = std::sqrt(dist2);
-    }
-  });
+      vtkGenericCell* cell = cells.Local();
+      for (vtkIdType s = begin; s < end; ++s)
+      {
+        double closest[3];
+        vtkIdType cellId = -1;
+        int subId = 0;
+        double dist2 = 0.0;
+        locator->FindClosestPoint(samples.data() + 3 * s, closest, cell, cellId, subId, dist2);
+        distances[s] = std::sqrt(dist2);
+      }
+    });
   return distances;
 }
 
@@ -144,8 +149,13 @@ void MeanAndMax(const std::vector<double>& values, double& mean, double& max)
 }
 } // namespace
 
-bool ComputeSurfaceDistance(vtkDataSet* mesh, vtkDataSet* reference, vtkIdType samplesPerSurface,
-  unsigned int seed, SurfaceDistance& result, std::string& why, const Progress& progress)
+bool ComputeSurfaceDistance(vtkDataSet* mesh,
+  vtkDataSet* reference,
+  vtkIdType samplesPerSurface,
+  unsigned int seed,
+  SurfaceDistance& result,
+  std::string& why,
+  const Progress& progress)
 {
   if (!mesh || !reference)
   {

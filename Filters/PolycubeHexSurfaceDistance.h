@@ -46,8 +46,13 @@ struct SurfaceDistance
 /// @param seed       seeds the std::mt19937 used for sampling: same seed, same result
 /// @param progress   called with the fraction done; returning false aborts (result unset)
 /// @return false with a reason in `why` when a surface is empty or degenerate, or on abort.
-bool ComputeSurfaceDistance(vtkDataSet* mesh, vtkDataSet* reference, vtkIdType samplesPerSurface,
-  unsigned int seed, SurfaceDistance& result, std::string& why, const Progress& progress = {});
+bool ComputeSurfaceDistance(vtkDataSet* mesh,
+  vtkDataSet* reference,
+  vtkIdType samplesPerSurface,
+  unsigned int seed,
+  SurfaceDistance& result,
+  std::string& why,
+  const Progress& progress = {});
 
 } // namespace polycubehex
 

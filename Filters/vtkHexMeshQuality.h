@@ -9,7 +9,8 @@
  * (vtkDataSetSurfaceFilter) is compared with the hex mesh's boundary.
  *
  * The output is a shallow copy of the hex mesh with
- * - cell `ScaledJacobian`: vtkMeshQuality's (Verdict's) hex scaled Jacobian;
+ * - cell `ScaledJacobian`: vtkMeshQuality's (Verdict's) hex scaled Jacobian, in [-1, 1]; a hex
+ *   with a zero-length edge, for which Verdict returns its sentinel 1e30, gets 0;
  * - field `HexCount`, `ScaledJacobianMin`, `ScaledJacobianMean`, `InvertedHexCount`
  *   (scaled Jacobian <= 0), `DegenerateHexCount` (a repeated vertex),
  *   `IrregularBoundaryVertexCount` (boundary quad valence other than 4);
@@ -72,8 +73,11 @@ public:
    * or has a cell that is not a hexahedron, or the reference has no surface; an invalid hex
    * mesh is not an error (it gets ValidHexMesh = 0).
    */
-  VTK_WRAPEXCLUDE static bool ComputeQuality(vtkUnstructuredGrid* hexes, vtkDataSet* reference,
-    vtkUnstructuredGrid* output, std::string& why, int numberOfDistanceSamples = 100000,
+  VTK_WRAPEXCLUDE static bool ComputeQuality(vtkUnstructuredGrid* hexes,
+    vtkDataSet* reference,
+    vtkUnstructuredGrid* output,
+    std::string& why,
+    int numberOfDistanceSamples = 100000,
     int randomSeed = 0);
 
 protected:
@@ -81,7 +85,8 @@ protected:
   ~vtkHexMeshQuality() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   int NumberOfDistanceSamples = 100000;

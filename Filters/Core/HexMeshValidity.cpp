@@ -88,8 +88,9 @@ void CheckDistinctVertices(const HexMesh& mesh, HexMeshValidity& result, std::os
 
 /// Matches the 6 faces of every hex with each other; returns the boundary faces as
 /// (hex, face) pairs in hex order.
-std::vector<std::pair<int, int>> MatchFaces(
-  const HexMesh& mesh, HexMeshValidity& result, std::ostream& report)
+std::vector<std::pair<int, int>> MatchFaces(const HexMesh& mesh,
+  HexMeshValidity& result,
+  std::ostream& report)
 {
   std::vector<FaceUse> uses;
   uses.reserve(6 * static_cast<size_t>(mesh.Cells.rows()));
@@ -103,9 +104,10 @@ std::vector<std::pair<int, int>> MatchFaces(
     }
   }
   // Sorting (rather than hashing) keeps the order, and so the first offender, deterministic.
-  std::sort(uses.begin(), uses.end(), [](const FaceUse& a, const FaceUse& b) {
-    return std::tie(a.Key, a.Hex, a.Face) < std::tie(b.Key, b.Hex, b.Face);
-  });
+  std::sort(uses.begin(),
+    uses.end(),
+    [](const FaceUse& a, const FaceUse& b)
+    { return std::tie(a.Key, a.Hex, a.Face) < std::tie(b.Key, b.Hex, b.Face); });
 
   std::vector<std::pair<int, int>> boundary;
   for (size_t begin = 0, end = 0; begin < uses.size(); begin = end)
@@ -126,8 +128,8 @@ std::vector<std::pair<int, int>> MatchFaces(
       const FaceUse& second = uses[begin + 1];
       // A quad with a repeated vertex has no orientation; its hex is already reported.
       if (!HasRepeats(first.Key) &&
-        !IsReversed(OrientedQuad(mesh, first.Hex, first.Face),
-          OrientedQuad(mesh, second.Hex, second.Face)))
+        !IsReversed(
+          OrientedQuad(mesh, first.Hex, first.Face), OrientedQuad(mesh, second.Hex, second.Face)))
       {
         if (result.MisorientedQuadCount++ == 0)
         {
@@ -143,9 +145,8 @@ std::vector<std::pair<int, int>> MatchFaces(
       if (result.OverSharedQuadCount++ == 0)
       {
         const auto quad = OrientedQuad(mesh, first.Hex, first.Face);
-        report << "quads shared by more than two hexes: first is quad " << quad[0] << " "
-               << quad[1] << " " << quad[2] << " " << quad[3] << ", used by " << count
-               << " hexes:";
+        report << "quads shared by more than two hexes: first is quad " << quad[0] << " " << quad[1]
+               << " " << quad[2] << " " << quad[3] << ", used by " << count << " hexes:";
         for (size_t i = begin; i < end; ++i)
         {
           report << " " << uses[i].Hex;
@@ -175,9 +176,13 @@ void CheckBoundaryEdges(const Quads& quads, HexMeshValidity& result, std::ostrea
       }
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const EdgeUse& a, const EdgeUse& b) {
-    return std::tie(a.Low, a.High, a.Quad, a.Forward) < std::tie(b.Low, b.High, b.Quad, b.Forward);
-  });
+  std::sort(edges.begin(),
+    edges.end(),
+    [](const EdgeUse& a, const EdgeUse& b)
+    {
+      return std::tie(a.Low, a.High, a.Quad, a.Forward) <
+        std::tie(b.Low, b.High, b.Quad, b.Forward);
+    });
   for (size_t begin = 0, end = 0; begin < edges.size(); begin = end)
   {
     end = begin + 1;
@@ -203,8 +208,10 @@ void CheckBoundaryEdges(const Quads& quads, HexMeshValidity& result, std::ostrea
 
 /// Around a manifold boundary vertex the boundary quads form one fan; two cubes touching at a
 /// vertex give two fans. Also counts irregular vertices (boundary valence other than 4).
-void CheckBoundaryVertices(
-  const Quads& quads, int vertexCount, HexMeshValidity& result, std::ostream& report)
+void CheckBoundaryVertices(const Quads& quads,
+  int vertexCount,
+  HexMeshValidity& result,
+  std::ostream& report)
 {
   // Corners of boundary quads grouped by vertex (compressed rows).
   std::vector<int> offsets(vertexCount + 1, 0);
@@ -265,8 +272,8 @@ void CheckBoundaryVertices(
     }
     if (fans > 1 && result.NonManifoldBoundaryVertexCount++ == 0)
     {
-      report << "non-manifold boundary vertices (several boundary fans meet): first is vertex "
-             << v << ", with " << fans << " fans\n";
+      report << "non-manifold boundary vertices (several boundary fans meet): first is vertex " << v
+             << ", with " << fans << " fans\n";
     }
   }
 }

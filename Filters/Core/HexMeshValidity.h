@@ -16,8 +16,9 @@ namespace polycubehex
 
 /// VTK's vtkHexahedron face table: local face k has these 4 local vertices, ordered so that the
 /// normal (right-hand rule) points out of a positively oriented hex.
-constexpr std::array<std::array<int, 4>, 6> HexFaces = { { { 0, 4, 7, 3 }, { 1, 2, 6, 5 },
-  { 0, 1, 5, 4 }, { 3, 7, 6, 2 }, { 0, 3, 2, 1 }, { 4, 5, 6, 7 } } };
+constexpr std::array<std::array<int, 4>, 6> HexFaces = {
+  { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 }, { 3, 7, 6, 2 }, { 0, 3, 2, 1 }, { 4, 5, 6, 7 } }
+};
 
 /// What checkHexMeshValidity found. Counts are 0 on a valid mesh except the informative ones
 /// (HexCount, BoundaryQuadCount, IrregularBoundaryVertexCount).
@@ -51,9 +52,9 @@ struct HexMeshValidity
   /// True when every combinatorial condition of DESIGN.md section 4 holds.
   bool IsValid() const
   {
-    return this->HexCount > 0 && this->DegenerateHexCount == 0 &&
-      this->OverSharedQuadCount == 0 && this->MisorientedQuadCount == 0 &&
-      this->NonManifoldBoundaryEdgeCount == 0 && this->NonManifoldBoundaryVertexCount == 0;
+    return this->HexCount > 0 && this->DegenerateHexCount == 0 && this->OverSharedQuadCount == 0 &&
+      this->MisorientedQuadCount == 0 && this->NonManifoldBoundaryEdgeCount == 0 &&
+      this->NonManifoldBoundaryVertexCount == 0;
   }
 };
 

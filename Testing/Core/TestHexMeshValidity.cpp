@@ -50,8 +50,14 @@ HexMesh Grid(int n)
 /// so that cubes touching at corners share vertices.
 void AddCube(HexMesh& mesh, std::vector<Eigen::RowVector3d>& points, double x, double y, double z)
 {
-  const double corners[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
-    { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+  const double corners[8][3] = { { 0, 0, 0 },
+    { 1, 0, 0 },
+    { 1, 1, 0 },
+    { 0, 1, 0 },
+    { 0, 0, 1 },
+    { 1, 0, 1 },
+    { 1, 1, 1 },
+    { 0, 1, 1 } };
   Eigen::Matrix<int, 1, 8> hex;
   for (int c = 0; c < 8; ++c)
   {
