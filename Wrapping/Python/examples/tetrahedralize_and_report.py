@@ -12,6 +12,7 @@ import os
 import sys
 import time
 
+from vtkmodules.vtkCommonCore import vtkLogger
 from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkExtractEdges,
                                        vtkPolyDataConnectivityFilter)
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
@@ -83,6 +84,8 @@ def tet_statistics(grid):
 
 
 def main(argv=None):
+    # VTK's INFO lines (e.g. from vtkExtractEdges) would drown the report.
+    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("input", help="a closed surface (.off .obj .stl .ply) or a tet mesh "

@@ -1,0 +1,167 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""PolycubeHex benchmark: every model of shared/data through every stage that exists, with the
+paper's Table 1 numbers beside ours. Prints a Markdown table and writes it to BENCHMARKS.md.
+
+Not run by CTest (speed is measured here, not in tests). Run it with
+    Testing/Benchmark/run.sh            # builds first, then runs this script
+or directly with Debian's python3.11 and the build tree's package on PYTHONPATH:
+    python3.11 Testing/Benchmark/benchmark.py --data ../shared/data --output BENCHMARKS.md
+
+Timings are wall seconds, the median of --repeat runs (DESIGN.md section 4: medians of 3).
+"""
+import argparse
+import os
+import platform
+import resource
+import statistics
+import sys
+import time
+
+import polycubehex
+from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
+from vtkmodules.vtkIOGeometry import vtkOBJReader
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+
+# The paper's Table 1 (Fang et al. 2016) and the l1-polycube rows (Huang et al. 2014) for the
+# models we share with it: tets, hexes, frame seconds, polycube minutes, corners, SJ min/mean,
+# mean/Hausdorff distance (1e-3 of the bounding-box diagonal).
+PAPER = {
+    "kitten": {"closed-form": ("11k", 11941, 18, 2, 28, 0.435, 0.922, 0.652, 12.1)},
+    "rockerarm": {
+        "closed-form": ("66k", 17594, 111, 60, 83, 0.464, 0.936, 0.421, 8.06),
+        "l1": ("66k", 24346, None, None, 88, 0.439, 0.920, 1.81, 8.45),
+    },
+    "fertility": {
+        "closed-form": ("118k", 16247, 225, 180, 82, 0.396, 0.930, 0.452, 13.6),
+        "l1": ("118k", 17910, None, None, 96, 0.312, 0.911, 0.982, 12.2),
+    },
+}
+
+SURFACES = {".obj": vtkOBJReader, ".off": polycubehex.vtkOFFReader}
+VOLUMES = {".mesh": polycubehex.vtkMeditReader, ".vtk": vtkUnstructuredGridReader}
+
+
+def machine_description():
+    model = platform.processor() or "unknown CPU"
+    try:
+        with open("/proc/cpuinfo") as cpuinfo:
+            for line in cpuinfo:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    return "%s, %d cores, %s, Python %s" % (model, os.cpu_count(), platform.platform(),
+                                            platform.python_version())
+
+
+def timed(function, repeat):
+    """Runs `function` `repeat` times; returns its last result and the median seconds."""
+    seconds = []
+    result = None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = function()
+        seconds.append(time.perf_counter() - start)
+    return result, statistics.median(seconds)
+
+
+def load(path):
+    extension = os.path.splitext(path)[1].lower()
+    reader = (SURFACES.get(extension) or VOLUMES[extension])()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput(), extension in SURFACES
+
+
+def tetrahedralize(surface):
+    tets = polycubehex.vtkTetrahedralizeFilter()
+    tets.SetInputData(surface)
+    tets.Update()
+    return tets.GetOutput()
+
+
+def boundary_triangles(grid):
+    surface = vtkDataSetSurfaceFilter()
+    surface.SetInputData(grid)
+    surface.Update()
+    return surface.GetOutput().GetNumberOfPolys()
+
+
+def run_model(path, repeat):
+    name = os.path.splitext(os.path.basename(path))[0]
+    (data, is_surface), read_seconds = timed(lambda: load(path), 1)
+    row = {"model": name, "input": os.path.basename(path), "read s": read_seconds}
+    if is_surface:
+        grid, seconds = timed(lambda: tetrahedralize(data), repeat)
+        row["tetgen s"] = seconds
+        row["input"] += " (TetGen -pq2.0)"
+    else:
+        grid = data
+    row["tets"] = grid.GetNumberOfCells()
+    row["boundary tris"] = boundary_triangles(grid)
+    # Later stages join here as their filters land: cuts, frame field, polycube, hexes.
+    return row
+
+
+def format_value(value):
+    if value is None:
+        return "-"
+    if isinstance(value, float):
+        return "%.3g" % value if value < 100 else "%.0f" % value
+    return str(value)
+
+
+def table(rows, columns):
+    lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+    for row in rows:
+        lines.append("| " + " | ".join(format_value(row.get(c)) for c in columns) + " |")
+    return "\n".join(lines)
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--data", default=os.path.join(here, "..", "..", "..", "shared", "data"))
+    parser.add_argument("--output", default=os.path.join(here, "..", "..", "BENCHMARKS.md"))
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("models", nargs="*", help="model files (default: all of --data)")
+    args = parser.parse_args()
+
+    paths = args.models or sorted(
+        os.path.join(args.data, f) for f in os.listdir(args.data)
+        if os.path.splitext(f)[1] in SURFACES.keys() | VOLUMES.keys()
+        and not f.startswith("reference_"))
+    rows = []
+    for path in paths:
+        print("benchmarking", os.path.basename(path), file=sys.stderr)
+        rows.append(run_model(path, args.repeat))
+
+    columns = ["model", "input", "tets", "boundary tris", "read s", "tetgen s"]
+    paper_columns = ["model", "method", "#tet", "#hex", "frame s", "polycube min", "corners",
+                     "SJ min", "SJ mean", "dist mean", "Hausdorff"]
+    paper_rows = [dict(zip(paper_columns, (model, method) + values))
+                  for model, methods in PAPER.items() for method, values in methods.items()]
+    peak_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    report = "\n\n".join([
+        "# PolycubeHex benchmark",
+        "Machine: %s. Peak memory (resident): %.0f MB. Timings: median of %d runs, seconds."
+        % (machine_description(), peak_mb, args.repeat),
+        "Generated by `Testing/Benchmark/run.sh`; do not edit by hand.",
+        "## Ours", table(rows, columns),
+        "## The paper (Table 1 of Fang et al. 2016; l1 rows from Huang et al. 2014)",
+        "Their inputs are tet meshes we do not have (11k-118k tets); ours are the shared models "
+        "as shipped, surfaces tetrahedralized by TetGen at radius-edge ratio 2.0. Their timings "
+        "are on 2 Xeon 2.6 GHz CPUs.",
+        table(paper_rows, paper_columns),
+    ]) + "\n"
+    print(report)
+    with open(args.output, "w") as out:
+        out.write(report)
+    print("wrote", os.path.abspath(args.output), file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
