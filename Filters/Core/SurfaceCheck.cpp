@@ -50,12 +50,16 @@ std::string FormatFace(const SurfaceMesh& surface, int face)
   return text.str();
 }
 
-/// "<count> <what>, e.g. <example>, <example>, <example>"
-std::string Describe(const std::string& prefix, int count, const std::string& what,
+/// "<prefix><count> <noun> <rest>, e.g. <example>, <example>, <example>"
+std::string Describe(const std::string& prefix,
+  int count,
+  const char* singular,
+  const char* plural,
+  const std::string& rest,
   const std::vector<std::string>& examples)
 {
   std::ostringstream text;
-  text << prefix << count << " " << what;
+  text << prefix << count << " " << (count == 1 ? singular : plural) << " " << rest;
   for (std::size_t i = 0; i < examples.size(); ++i)
   {
     text << (i == 0 ? ", e.g. " : ", ") << examples[i];
@@ -112,8 +116,9 @@ bool HasRepeatedVertex(const SurfaceMesh& surface, int f)
 }
 
 /// Index ranges and finite coordinates: every later check relies on both.
-void CheckIndicesAndCoordinates(
-  const SurfaceMesh& surface, SurfaceCheckReport& report, std::vector<char>& used)
+void CheckIndicesAndCoordinates(const SurfaceMesh& surface,
+  SurfaceCheckReport& report,
+  std::vector<char>& used)
 {
   const int vertexCount = static_cast<int>(surface.Vertices.rows());
   std::vector<std::string> examples;
@@ -140,9 +145,9 @@ void CheckIndicesAndCoordinates(
   }
   if (report.OutOfRangeIndexCount > 0)
   {
-    std::ostringstream what;
-    what << "triangles with a vertex index outside [0, " << vertexCount << ")";
-    report.Problems.push_back(Describe("", report.OutOfRangeIndexCount, what.str(), examples));
+    const std::string rest = "with a vertex index outside [0, " + std::to_string(vertexCount) + ")";
+    report.Problems.push_back(
+      Describe("", report.OutOfRangeIndexCount, "triangle", "triangles", rest, examples));
   }
 
   examples.clear();
@@ -156,15 +161,19 @@ void CheckIndicesAndCoordinates(
     {
       if (report.NonFiniteVertexCount++ < ExampleCount)
       {
-        examples.push_back("vertex " + std::to_string(v) + " at " +
-          FormatPoint(Position(surface, v)));
+        examples.push_back(
+          "vertex " + std::to_string(v) + " at " + FormatPoint(Position(surface, v)));
       }
     }
   }
   if (report.NonFiniteVertexCount > 0)
   {
-    report.Problems.push_back(Describe("non-finite coordinates: ", report.NonFiniteVertexCount,
-      "vertices with a NaN or infinite coordinate", examples));
+    report.Problems.push_back(Describe("non-finite coordinates: ",
+      report.NonFiniteVertexCount,
+      "vertex",
+      "vertices",
+      "with a NaN or infinite coordinate",
+      examples));
   }
 }
 
@@ -184,7 +193,8 @@ double BoundingBoxDiagonal(const SurfaceMesh& surface, const std::vector<char>& 
 }
 
 /// Degenerate and duplicate triangles, and distinct vertices at one position.
-void CheckElements(const SurfaceMesh& surface, const std::vector<char>& used,
+void CheckElements(const SurfaceMesh& surface,
+  const std::vector<char>& used,
   SurfaceCheckReport& report)
 {
   const double minHeight = DegenerateHeight * report.BoundingBoxDiagonal;
@@ -207,8 +217,12 @@ void CheckElements(const SurfaceMesh& surface, const std::vector<char>& used,
   }
   if (report.DegenerateFaceCount > 0)
   {
-    report.Problems.push_back(Describe("", report.DegenerateFaceCount,
-      "degenerate triangles (a repeated vertex or no area)", examples));
+    report.Problems.push_back(Describe("",
+      report.DegenerateFaceCount,
+      "degenerate triangle",
+      "degenerate triangles",
+      "(a repeated vertex or no area)",
+      examples));
   }
 
   // Duplicates: the same vertex set, whatever the order or orientation.
@@ -234,8 +248,12 @@ void CheckElements(const SurfaceMesh& surface, const std::vector<char>& used,
   }
   if (report.DuplicateFaceCount > 0)
   {
-    report.Problems.push_back(Describe("", report.DuplicateFaceCount,
-      "duplicate triangles (the same three vertices as another triangle)", examples));
+    report.Problems.push_back(Describe("",
+      report.DuplicateFaceCount,
+      "duplicate triangle",
+      "duplicate triangles",
+      "(the same three vertices as another triangle)",
+      examples));
   }
 
   // Coincident vertices: the surface touches itself there, which TetGen cannot mesh.
@@ -268,8 +286,12 @@ void CheckElements(const SurfaceMesh& surface, const std::vector<char>& used,
   }
   if (report.CoincidentVertexCount > 0)
   {
-    report.Problems.push_back(Describe("", report.CoincidentVertexCount,
-      "vertices at exactly the position of another vertex (merge them first)", examples));
+    report.Problems.push_back(Describe("",
+      report.CoincidentVertexCount,
+      "vertex",
+      "vertices",
+      "at exactly the position of another vertex (merge them first)",
+      examples));
   }
 }
 
@@ -297,8 +319,8 @@ std::vector<HalfEdge> CheckEdges(const SurfaceMesh& surface, SurfaceCheckReport&
   for (std::size_t i = 0; i < halfEdges.size();)
   {
     std::size_t j = i;
-    while (j < halfEdges.size() && halfEdges[j].A == halfEdges[i].A &&
-      halfEdges[j].B == halfEdges[i].B)
+    while (
+      j < halfEdges.size() && halfEdges[j].A == halfEdges[i].A && halfEdges[j].B == halfEdges[i].B)
     {
       ++j;
     }
@@ -333,18 +355,30 @@ std::vector<HalfEdge> CheckEdges(const SurfaceMesh& surface, SurfaceCheckReport&
   }
   if (report.BoundaryEdgeCount > 0)
   {
-    report.Problems.push_back(Describe("the surface is not closed: ", report.BoundaryEdgeCount,
-      "boundary edges (in one triangle only)", boundary));
+    report.Problems.push_back(Describe("the surface is not closed: ",
+      report.BoundaryEdgeCount,
+      "boundary edge",
+      "boundary edges",
+      "(in one triangle only)",
+      boundary));
   }
   if (report.NonManifoldEdgeCount > 0)
   {
     report.Problems.push_back(Describe("the surface is not 2-manifold: ",
-      report.NonManifoldEdgeCount, "edges in more than two triangles", nonManifold));
+      report.NonManifoldEdgeCount,
+      "edge",
+      "edges",
+      "in more than two triangles",
+      nonManifold));
   }
   if (report.MisorientedEdgeCount > 0)
   {
     report.Problems.push_back(Describe("the surface is not consistently oriented: ",
-      report.MisorientedEdgeCount, "edges used twice in the same direction", misoriented));
+      report.MisorientedEdgeCount,
+      "edge",
+      "edges",
+      "used twice in the same direction",
+      misoriented));
   }
   return halfEdges;
 }
@@ -408,14 +442,18 @@ void CheckVertexFans(const SurfaceMesh& surface, SurfaceCheckReport& report)
   if (report.NonManifoldVertexCount > 0)
   {
     report.Problems.push_back(Describe("the surface is not 2-manifold: ",
-      report.NonManifoldVertexCount, "vertices whose triangles form several separate fans",
+      report.NonManifoldVertexCount,
+      "vertex",
+      "vertices",
+      "whose triangles form several separate fans",
       examples));
   }
 }
 
 /// Components through shared edges, with their topology, volume and bounds.
-void FindComponents(
-  const SurfaceMesh& surface, const std::vector<HalfEdge>& halfEdges, SurfaceCheckReport& report)
+void FindComponents(const SurfaceMesh& surface,
+  const std::vector<HalfEdge>& halfEdges,
+  SurfaceCheckReport& report)
 {
   const int faceCount = static_cast<int>(surface.Faces.rows());
   UnionFind sets(faceCount);
@@ -536,7 +574,8 @@ void FindNesting(const SurfaceMesh& surface, SurfaceCheckReport& report)
 
 int SurfaceCheckReport::VoidCount() const
 {
-  return static_cast<int>(std::count_if(this->Components.begin(), this->Components.end(),
+  return static_cast<int>(std::count_if(this->Components.begin(),
+    this->Components.end(),
     [](const SurfaceComponent& c) { return c.IsVoid(); }));
 }
 
@@ -568,8 +607,10 @@ std::string SurfaceCheckReport::Summary() const
   return text.str();
 }
 
-double ComponentWindingNumber(const SurfaceMesh& surface, const SurfaceCheckReport& report,
-  int component, const Eigen::Vector3d& point)
+double ComponentWindingNumber(const SurfaceMesh& surface,
+  const SurfaceCheckReport& report,
+  int component,
+  const Eigen::Vector3d& point)
 {
   // Van Oosterom and Strackee's solid angle of each triangle seen from `point`, summed.
   double solidAngle = 0.0;
@@ -623,8 +664,8 @@ Status CheckClosedSurface(const SurfaceMesh& surface, SurfaceCheckReport& report
     return Status::Success();
   }
   std::ostringstream message;
-  message << "invalid surface (" << surface.Vertices.rows() << " vertices, "
-          << surface.Faces.rows() << " triangles): ";
+  message << "invalid surface (" << surface.Vertices.rows() << " vertices, " << surface.Faces.rows()
+          << " triangles): ";
   for (std::size_t i = 0; i < report.Problems.size(); ++i)
   {
     message << (i == 0 ? "" : "; ") << report.Problems[i];

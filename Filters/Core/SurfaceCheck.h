@@ -25,7 +25,7 @@ struct SurfaceComponent
   double SignedVolume = 0.0;
   /// How many other components enclose this one: odd depth = the boundary of a void.
   int NestingDepth = 0;
-  int Parent = -1;   ///< the innermost enclosing component, -1 at depth 0
+  int Parent = -1;        ///< the innermost enclosing component, -1 at depth 0
   std::vector<int> Faces; ///< ids of the component's faces, ascending
   double BoundsMin[3] = { 0.0, 0.0, 0.0 };
   double BoundsMax[3] = { 0.0, 0.0, 0.0 };
@@ -58,7 +58,7 @@ struct SurfaceCheckReport
   double EnclosedVolume = 0.0;
 
   std::vector<SurfaceComponent> Components; ///< filled when the surface is valid
-  std::vector<int> FaceComponent; ///< #F component of each face (when valid)
+  std::vector<int> FaceComponent;           ///< #F component of each face (when valid)
   std::vector<std::string> Problems;
 
   bool IsValid() const { return this->Problems.empty(); }
@@ -80,7 +80,9 @@ Status CheckClosedSurface(const SurfaceMesh& surface, SurfaceCheckReport& report
 /// Generalized winding number (Jacobson et al. 2013) of the faces of one component of a checked
 /// surface at `point`: about +-1 inside the component's enclosed region and 0 outside, with the
 /// sign of the component's orientation. Exact in the sense of the solid-angle sum; no tolerance.
-double ComponentWindingNumber(const SurfaceMesh& surface, const SurfaceCheckReport& report,
-  int component, const Eigen::Vector3d& point);
+double ComponentWindingNumber(const SurfaceMesh& surface,
+  const SurfaceCheckReport& report,
+  int component,
+  const Eigen::Vector3d& point);
 
 } // namespace polycubehex

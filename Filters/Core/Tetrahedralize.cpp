@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <sstream>
@@ -14,15 +15,27 @@
 
 #ifdef POLYCUBEHEX_HAS_TETGEN
 #include <tetgen.h>
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <map>
 #endif
 
 namespace polycubehex
 {
 namespace
 {
-/// Each tet should hold about this fraction of TetGen's volume bound: quality refinement leaves
-/// most tets well below the bound, so the bound is set above the mean volume wanted.
-constexpr double TargetVolumeFactor = 1.0;
+/// TetGen's tets average well below its volume bound (a third to a fifth of it), so the bound for
+/// a target count is this factor times the mean volume wanted. Measured on a ball, torus.obj,
+/// 3holes.obj and fertility.off for targets of 20k to 300k: counts within 0.7x to 1.7x of target.
+constexpr double TargetVolumeFactor = 3.0;
 
 Status CheckParameters(const TetrahedralizeParameters& params)
 {
@@ -45,8 +58,11 @@ Status CheckParameters(const TetrahedralizeParameters& params)
 #ifdef POLYCUBEHEX_HAS_TETGEN
 
 /// Components of `report` whose winding number at `point` is about +-1.
-int EnclosingCount(const SurfaceMesh& surface, const SurfaceCheckReport& report,
-  const Eigen::Vector3d& point, int component, bool& insideComponent)
+int EnclosingCount(const SurfaceMesh& surface,
+  const SurfaceCheckReport& report,
+  const Eigen::Vector3d& point,
+  int component,
+  bool& insideComponent)
 {
   int count = 0;
   insideComponent = false;
@@ -56,8 +72,8 @@ int EnclosingCount(const SurfaceMesh& surface, const SurfaceCheckReport& report,
     bool inBounds = true;
     for (int k = 0; k < 3; ++k)
     {
-      inBounds = inBounds && point[k] >= candidate.BoundsMin[k] &&
-        point[k] <= candidate.BoundsMax[k];
+      inBounds =
+        inBounds && point[k] >= candidate.BoundsMin[k] && point[k] <= candidate.BoundsMax[k];
     }
     if (inBounds && std::abs(ComponentWindingNumber(surface, report, c, point)) > 0.5)
     {
@@ -71,8 +87,10 @@ int EnclosingCount(const SurfaceMesh& surface, const SurfaceCheckReport& report,
 /// A point strictly inside the void bounded by component `v`: just behind one of its faces, on
 /// the side its enclosed region lies. Accepted only if the winding numbers agree that the point
 /// is inside `v` and inside exactly the components enclosing `v`, i.e. not in a solid island.
-bool FindVoidSeed(
-  const SurfaceMesh& surface, const SurfaceCheckReport& report, int v, Eigen::Vector3d& seed)
+bool FindVoidSeed(const SurfaceMesh& surface,
+  const SurfaceCheckReport& report,
+  int v,
+  Eigen::Vector3d& seed)
 {
   const SurfaceComponent& component = report.Components[v];
   // Largest faces first: their neighbourhood leaves the most room.
@@ -167,39 +185,28 @@ double SignedVolume(const TetMesh& mesh, int t)
   return (p1 - p0).cross(p2 - p0).dot(p3 - p0) / 6.0;
 }
 
-/// TetGen's exit codes (its terminatetetgen()), as sentences.
-std::string TetGenError(int code)
-{
-  switch (code)
-  {
-    case 1:
-      return "out of memory";
-    case 2:
-      return "internal error";
-    case 3:
-      return "the surface intersects itself";
-    case 4:
-      return "a very small input feature was found (features far below the mesh size)";
-    case 5:
-      return "two input triangles are very close to each other";
-    case 10:
-      return "TetGen refused the input";
-    default:
-      return "unknown error code " + std::to_string(code);
-  }
-}
+// TetGen 1.5.0 cannot fail safely inside a library: on any error (self-intersection, tiny
+// feature, ...) its terminatetetgen() frees the mesh's memory pools and throws, and the mesh's
+// destructor frees them again while the exception unwinds, which crashes the process. So TetGen
+// runs in a forked child process that sends the result back through a pipe: a failure costs
+// only the child, and the parent can poll for an abort while TetGen works.
 
-/// Runs TetGen; tetgenio frees its arrays with delete[], so they are allocated with new[].
-Status RunTetGen(const SurfaceMesh& surface, const std::vector<Eigen::Vector3d>& holes,
-  const std::string& switches, TetMesh& out)
+/// What the child sends first: the tets, or the triangles TetGen's -d check found crossing.
+enum class ChildResult : std::int32_t
 {
-  tetgenio in;
-  tetgenio result;
+  Tets = 0,
+  Intersections = 1
+};
+
+void FillTetGenInput(const SurfaceMesh& surface,
+  const std::vector<Eigen::Vector3d>& holes,
+  tetgenio& in)
+{
+  // tetgenio frees its arrays with delete[], so they are allocated with new[].
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(surface.Vertices.rows());
   in.pointlist = new REAL[3 * in.numberofpoints];
-  std::copy(surface.Vertices.data(), surface.Vertices.data() + 3 * in.numberofpoints,
-    in.pointlist);
+  std::copy(surface.Vertices.data(), surface.Vertices.data() + 3 * in.numberofpoints, in.pointlist);
   in.numberoffacets = static_cast<int>(surface.Faces.rows());
   in.facetlist = new tetgenio::facet[in.numberoffacets];
   for (int f = 0; f < in.numberoffacets; ++f)
@@ -222,40 +229,255 @@ Status RunTetGen(const SurfaceMesh& surface, const std::vector<Eigen::Vector3d>&
   {
     std::copy(holes[h].data(), holes[h].data() + 3, in.holelist + 3 * h);
   }
+}
 
-  std::vector<char> commandLine(switches.begin(), switches.end());
-  commandLine.push_back('\0');
+bool WriteAll(int fd, const void* data, std::size_t bytes)
+{
+  const char* next = static_cast<const char*>(data);
+  while (bytes > 0)
+  {
+    const ssize_t written = ::write(fd, next, bytes);
+    if (written < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (written <= 0)
+    {
+      return false;
+    }
+    next += written;
+    bytes -= static_cast<std::size_t>(written);
+  }
+  return true;
+}
+
+template<typename T>
+bool WriteArray(int fd, const T* values, std::int32_t count)
+{
+  return WriteAll(fd, &count, sizeof(count)) && WriteAll(fd, values, sizeof(T) * count);
+}
+
+/// The child: TetGen's self-intersection check (-d), then the mesh. Never returns.
+[[noreturn]] void RunChild(const SurfaceMesh& surface,
+  const std::vector<Eigen::Vector3d>& holes,
+  const std::string& switches,
+  int fd)
+{
+  bool sent = false;
   try
   {
-    tetrahedralize(commandLine.data(), &in, &result);
+    tetgenio in;
+    FillTetGenInput(surface, holes, in);
+    tetgenio check;
+    char detect[] = "pdQ";
+    tetrahedralize(detect, &in, &check);
+    if (check.numberoftrifaces > 0)
+    {
+      const ChildResult kind = ChildResult::Intersections;
+      sent = WriteAll(fd, &kind, sizeof(kind)) &&
+        WriteArray(fd, check.trifacelist, 3 * check.numberoftrifaces);
+    }
+    else
+    {
+      tetgenio result;
+      std::vector<char> commandLine(switches.begin(), switches.end());
+      commandLine.push_back('\0');
+      tetrahedralize(commandLine.data(), &in, &result);
+      const ChildResult kind = ChildResult::Tets;
+      const std::int32_t corners = result.numberoftetrahedra > 0 ? result.numberofcorners : 4;
+      sent = WriteAll(fd, &kind, sizeof(kind)) &&
+        WriteArray(fd, result.pointlist, 3 * result.numberofpoints) &&
+        WriteArray(fd, result.tetrahedronlist, corners * result.numberoftetrahedra);
+    }
   }
-  catch (int code)
+  catch (...)
   {
-    return Status::Failure("TetGen failed (-" + switches + "): " + TetGenError(code));
+    sent = false; // the crash described above usually comes first
   }
-  catch (const std::exception& error)
+  ::close(fd);
+  ::_exit(sent ? 0 : 1); // no atexit handlers or stdio flushes of the parent's state
+}
+
+/// A cursor over the bytes the child sent.
+struct Reader
+{
+  const std::string& Bytes;
+  std::size_t Offset = 0;
+
+  template<typename T>
+  bool Read(T& value)
   {
-    return Status::Failure("TetGen failed (-" + switches + "): " + error.what());
+    if (this->Offset + sizeof(T) > this->Bytes.size())
+    {
+      return false;
+    }
+    std::memcpy(&value, this->Bytes.data() + this->Offset, sizeof(T));
+    this->Offset += sizeof(T);
+    return true;
   }
-  if (result.numberoftetrahedra <= 0 || result.numberofcorners != 4)
+
+  template<typename T>
+  bool ReadArray(std::vector<T>& values)
+  {
+    std::int32_t count = 0;
+    if (!this->Read(count) || count < 0 || this->Offset + sizeof(T) * count > this->Bytes.size())
+    {
+      return false;
+    }
+    values.resize(count);
+    std::memcpy(values.data(), this->Bytes.data() + this->Offset, sizeof(T) * count);
+    this->Offset += sizeof(T) * count;
+    return true;
+  }
+};
+
+std::string DescribeChildEnd(int waitStatus)
+{
+  std::ostringstream text;
+  if (WIFSIGNALED(waitStatus))
+  {
+    text << "stopped by signal " << WTERMSIG(waitStatus) << " (" << strsignal(WTERMSIG(waitStatus))
+         << ")";
+  }
+  else
+  {
+    text << "exited with code " << WEXITSTATUS(waitStatus);
+  }
+  return text.str();
+}
+
+/// Reads everything the child sends, polling `progress` for an abort while TetGen works.
+/// Returns false if the caller aborted (the child is then killed).
+bool Collect(int fd, pid_t child, const Progress& progress, std::string& bytes)
+{
+  std::vector<char> chunk(1 << 16);
+  for (;;)
+  {
+    pollfd request = { fd, POLLIN, 0 };
+    const int ready = ::poll(&request, 1, 100);
+    if (ready == 0 || (ready < 0 && errno == EINTR))
+    {
+      if (!ReportProgress(progress, 0.1))
+      {
+        ::kill(child, SIGKILL);
+        return false;
+      }
+      continue;
+    }
+    const ssize_t got = ::read(fd, chunk.data(), chunk.size());
+    if (got < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (got <= 0)
+    {
+      return true; // end of data (or an error: the parse below notices missing bytes)
+    }
+    bytes.append(chunk.data(), static_cast<std::size_t>(got));
+  }
+}
+
+/// Runs TetGen with `switches` in a child process. On success fills `out` (TetGen's node order)
+/// or, if TetGen found self-intersections, `crossing` (#C vertex triples) and fails.
+Status RunTetGen(const SurfaceMesh& surface,
+  const std::vector<Eigen::Vector3d>& holes,
+  const std::string& switches,
+  const Progress& progress,
+  TetMesh& out,
+  std::vector<int>& crossing)
+{
+  int fds[2];
+  if (::pipe(fds) != 0)
+  {
+    return Status::Failure(std::string("cannot start TetGen: pipe: ") + std::strerror(errno));
+  }
+  const pid_t parent = ::getpid();
+  const pid_t child = ::fork();
+  if (child < 0)
+  {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return Status::Failure(std::string("cannot start TetGen: fork: ") + std::strerror(errno));
+  }
+  if (child == 0)
+  {
+    // Die with the parent: a killed application must not leave TetGen running.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent)
+    {
+      ::_exit(1);
+    }
+    ::close(fds[0]);
+    RunChild(surface, holes, switches, fds[1]);
+  }
+  ::close(fds[1]);
+  std::string bytes;
+  const bool finished = Collect(fds[0], child, progress, bytes);
+  ::close(fds[0]);
+  int waitStatus = 0;
+  while (::waitpid(child, &waitStatus, 0) < 0 && errno == EINTR)
+  {
+  }
+  if (!finished)
+  {
+    return Status::Failure("aborted while TetGen was running");
+  }
+
+  Reader reader{ bytes };
+  ChildResult kind = ChildResult::Tets;
+  std::vector<double> points;
+  std::vector<int> tets;
+  const bool complete = WIFEXITED(waitStatus) && WEXITSTATUS(waitStatus) == 0 &&
+    reader.Read(kind) &&
+    (kind == ChildResult::Intersections ? reader.ReadArray(crossing)
+                                        : reader.ReadArray(points) && reader.ReadArray(tets));
+  if (!complete)
+  {
+    return Status::Failure("TetGen (-" + switches + ") failed on this surface: it " +
+      DescribeChildEnd(waitStatus) +
+      ". TetGen stops this way on nearly touching triangles and on features far smaller than "
+      "the mesh size");
+  }
+  if (kind == ChildResult::Intersections)
+  {
+    return Status::Failure("self-intersections");
+  }
+  if (tets.empty() || tets.size() % 4 != 0 || points.size() % 3 != 0)
   {
     return Status::Failure("TetGen (-" + switches + ") produced no tetrahedra");
   }
-
-  out.Vertices.resize(result.numberofpoints, 3);
-  std::copy(result.pointlist, result.pointlist + 3 * result.numberofpoints, out.Vertices.data());
-  out.Cells.resize(result.numberoftetrahedra, 4);
-  for (int t = 0; t < result.numberoftetrahedra; ++t)
-  {
-    const int* tet = result.tetrahedronlist + 4 * t;
-    // TetGen's tets are negatively oriented in VTK's sense (its orient3d, Shewchuk's sign
-    // convention, is positive for them): swapping two nodes makes every volume positive.
-    out.Cells(t, 0) = tet[0];
-    out.Cells(t, 1) = tet[2];
-    out.Cells(t, 2) = tet[1];
-    out.Cells(t, 3) = tet[3];
-  }
+  out.Vertices = Eigen::Map<const Points>(points.data(), points.size() / 3, 3);
+  // TetGen keeps orient3d(p0, p1, p2, p3) < 0 for its tets; Shewchuk's orient3d is minus six
+  // times VTK's signed volume, so TetGen's node order is already VTK's positive order.
+  out.Cells = Eigen::Map<const Tets>(tets.data(), tets.size() / 4, 4);
   return Status::Success();
+}
+
+/// "the surface intersects itself: N triangles cross others, e.g. triangle f (a, b, c), ..."
+std::string DescribeIntersections(const SurfaceMesh& surface, const std::vector<int>& crossing)
+{
+  std::map<std::array<int, 3>, int> faceOf;
+  for (int f = 0; f < surface.Faces.rows(); ++f)
+  {
+    std::array<int, 3> key = { surface.Faces(f, 0), surface.Faces(f, 1), surface.Faces(f, 2) };
+    std::sort(key.begin(), key.end());
+    faceOf[key] = f;
+  }
+  const std::size_t count = crossing.size() / 3;
+  std::ostringstream text;
+  text << "the surface intersects itself: " << count
+       << " triangles cross other triangles (TetGen -d)";
+  for (std::size_t i = 0; i < std::min<std::size_t>(count, 3); ++i)
+  {
+    std::array<int, 3> key = { crossing[3 * i], crossing[3 * i + 1], crossing[3 * i + 2] };
+    std::sort(key.begin(), key.end());
+    const auto found = faceOf.find(key);
+    // TetGen may renumber vertices it merges, so a triangle may match no input face.
+    text << (i == 0 ? ", e.g. " : ", ") << "triangle "
+         << (found != faceOf.end() ? std::to_string(found->second) + " " : std::string()) << "("
+         << crossing[3 * i] << ", " << crossing[3 * i + 1] << ", " << crossing[3 * i + 2] << ")";
+  }
+  return text.str();
 }
 
 /// Drops vertices in no tet (TetGen keeps none normally), keeping the order of the others so
@@ -293,8 +515,11 @@ void DropUnreferencedPoints(TetMesh& mesh)
 #endif
 } // namespace
 
-Status Tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeParameters& params,
-  TetMesh& out, std::string& switchesUsed, const Progress& progress)
+Status Tetrahedralize(const SurfaceMesh& surface,
+  const TetrahedralizeParameters& params,
+  TetMesh& out,
+  std::string& switchesUsed,
+  const Progress& progress)
 {
   out = TetMesh();
   switchesUsed.clear();
@@ -364,13 +589,22 @@ Status Tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeParameters
   }
 
   // 5. TetGen, then the output in VTK's orientation, verified.
-  const Status meshed = RunTetGen(*input, holes, switches, out);
+  std::vector<int> crossing;
+  const Status meshed = RunTetGen(*input, holes, switches, progress, out, crossing);
+  if (!crossing.empty())
+  {
+    // Vertex ids of the compact surface: report them only when they are the input's.
+    return Status::Failure("cannot tetrahedralize: " + DescribeIntersections(*input, crossing) +
+      (input == &surface ? "" : " (vertex ids after dropping unused vertices)"));
+  }
   if (!meshed)
   {
+    out = TetMesh();
     return meshed;
   }
   if (!ReportProgress(progress, 0.9))
   {
+    out = TetMesh();
     return Status::Failure("aborted");
   }
   DropUnreferencedPoints(out);

@@ -26,13 +26,38 @@ constexpr double Pi = 3.14159265358979323846;
 SurfaceMesh Icosphere(int levels, double radius, const Eigen::Vector3d& centre, bool inward = false)
 {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> points = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 },
-    { 1, -t, 0 }, { 0, -1, t }, { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 },
-    { t, 0, 1 }, { -t, 0, -1 }, { -t, 0, 1 } };
-  std::vector<std::array<int, 3>> faces = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 },
-    { 0, 7, 10 }, { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 },
-    { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 },
-    { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  std::vector<Eigen::Vector3d> points = { { -1, t, 0 },
+    { 1, t, 0 },
+    { -1, -t, 0 },
+    { 1, -t, 0 },
+    { 0, -1, t },
+    { 0, 1, t },
+    { 0, -1, -t },
+    { 0, 1, -t },
+    { t, 0, -1 },
+    { t, 0, 1 },
+    { -t, 0, -1 },
+    { -t, 0, 1 } };
+  std::vector<std::array<int, 3>> faces = { { 0, 11, 5 },
+    { 0, 5, 1 },
+    { 0, 1, 7 },
+    { 0, 7, 10 },
+    { 0, 10, 11 },
+    { 1, 5, 9 },
+    { 5, 11, 4 },
+    { 11, 10, 2 },
+    { 10, 7, 6 },
+    { 7, 1, 8 },
+    { 3, 9, 4 },
+    { 3, 4, 2 },
+    { 3, 2, 6 },
+    { 3, 6, 8 },
+    { 3, 8, 9 },
+    { 4, 9, 5 },
+    { 2, 4, 11 },
+    { 6, 2, 10 },
+    { 8, 6, 7 },
+    { 9, 8, 1 } };
   for (int level = 0; level < levels; ++level)
   {
     std::map<std::pair<int, int>, int> midpoints;
@@ -136,13 +161,18 @@ SurfaceMesh Merge(const SurfaceMesh& a, const SurfaceMesh& b)
 /// Two tet surfaces glued at the first `shared` vertices of the second onto the first's.
 SurfaceMesh GlueTets(int shared)
 {
-  const SurfaceMesh a = TetSurface({ Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
-    Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1) });
-  SurfaceMesh b = shared == 2
-    ? TetSurface({ Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, -1, 0),
-        Eigen::Vector3d(0, 0, -1) })
-    : TetSurface({ Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, -1, 0),
-        Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(0, 0, -1) });
+  const SurfaceMesh a = TetSurface({ Eigen::Vector3d(0, 0, 0),
+    Eigen::Vector3d(1, 0, 0),
+    Eigen::Vector3d(0, 1, 0),
+    Eigen::Vector3d(0, 0, 1) });
+  SurfaceMesh b = shared == 2 ? TetSurface({ Eigen::Vector3d(0, 0, 0),
+                                  Eigen::Vector3d(1, 0, 0),
+                                  Eigen::Vector3d(0, -1, 0),
+                                  Eigen::Vector3d(0, 0, -1) })
+                              : TetSurface({ Eigen::Vector3d(0, 0, 0),
+                                  Eigen::Vector3d(0, -1, 0),
+                                  Eigen::Vector3d(-1, 0, 0),
+                                  Eigen::Vector3d(0, 0, -1) });
   SurfaceMesh glued = Merge(a, b);
   // Vertex i < shared of b is vertex i of a: renumber, leaving b's copy unused.
   for (Eigen::Index f = a.Faces.rows(); f < glued.Faces.rows(); ++f)
@@ -170,12 +200,14 @@ bool Contains(const std::string& text, const std::string& part)
 
 double PolyhedronVolume(const SurfaceMesh& mesh)
 {
+  // Relative to a vertex: far from the origin the plain sum cancels catastrophically.
+  const Eigen::Vector3d origin = mesh.Vertices.row(0).transpose();
   double sixVolume = 0.0;
   for (int f = 0; f < mesh.Faces.rows(); ++f)
   {
-    const Eigen::Vector3d p0 = mesh.Vertices.row(mesh.Faces(f, 0)).transpose();
-    const Eigen::Vector3d p1 = mesh.Vertices.row(mesh.Faces(f, 1)).transpose();
-    const Eigen::Vector3d p2 = mesh.Vertices.row(mesh.Faces(f, 2)).transpose();
+    const Eigen::Vector3d p0 = mesh.Vertices.row(mesh.Faces(f, 0)).transpose() - origin;
+    const Eigen::Vector3d p1 = mesh.Vertices.row(mesh.Faces(f, 1)).transpose() - origin;
+    const Eigen::Vector3d p2 = mesh.Vertices.row(mesh.Faces(f, 2)).transpose() - origin;
     sixVolume += p0.dot(p1.cross(p2));
   }
   return sixVolume / 6.0;
@@ -219,8 +251,7 @@ void TestValidShapes()
   std::cout << "hollow ball: " << report.Summary();
 
   // The same void oriented like a body is still a void (nesting decides), flagged as inwards.
-  const SurfaceMesh sameOrientation =
-    Merge(outer, Icosphere(2, 0.5, Eigen::Vector3d(0.1, 0, 0)));
+  const SurfaceMesh sameOrientation = Merge(outer, Icosphere(2, 0.5, Eigen::Vector3d(0.1, 0, 0)));
   PCH_CHECK(polycubehex::CheckClosedSurface(sameOrientation, report).Ok());
   PCH_CHECK(report.Components[1].IsVoid() && !report.Components[1].OrientedOutward());
   PCH_CHECK_NEAR(report.EnclosedVolume, PolyhedronVolume(outer) + PolyhedronVolume(inner), 1e-9);
@@ -262,7 +293,7 @@ void TestBrokenShapes()
   std::cout << "shared edge: " << status.Message() << std::endl;
   PCH_CHECK(!status.Ok());
   PCH_CHECK(report.NonManifoldEdgeCount == 1);
-  PCH_CHECK(Contains(status.Message(), "not 2-manifold: 1 edges in more than two triangles"));
+  PCH_CHECK(Contains(status.Message(), "not 2-manifold: 1 edge in more than two triangles"));
   PCH_CHECK(Contains(status.Message(), "edge (0, 1) at (0, 0, 0)-(1, 0, 0) in 4 triangles"));
 
   const SurfaceMesh sharedVertex = GlueTets(1);
@@ -288,14 +319,21 @@ void TestBrokenShapes()
   SurfaceMesh notFinite = sphere;
   notFinite.Vertices(3, 1) = std::numeric_limits<double>::quiet_NaN();
   status = polycubehex::CheckClosedSurface(notFinite, report);
-  PCH_CHECK(!status.Ok() && Contains(status.Message(), "non-finite coordinates: 1 vertices"));
+  PCH_CHECK(!status.Ok() && Contains(status.Message(), "non-finite coordinates: 1 vertex"));
 
   SurfaceMesh flat = sphere;
   flat.Vertices.row(flat.Faces(0, 2)) =
     0.5 * (flat.Vertices.row(flat.Faces(0, 0)) + flat.Vertices.row(flat.Faces(0, 1)));
   status = polycubehex::CheckClosedSurface(flat, report);
-  PCH_CHECK(!status.Ok() && report.DegenerateFaceCount >= 1);
-  PCH_CHECK(Contains(status.Message(), "degenerate triangles"));
+  PCH_CHECK(!status.Ok() && report.DegenerateFaceCount == 1);
+  PCH_CHECK(Contains(status.Message(), "1 degenerate triangle (a repeated vertex or no area)"));
+
+  SurfaceMesh repeated = sphere;
+  repeated.Faces(5, 1) = repeated.Faces(5, 0);
+  status = polycubehex::CheckClosedSurface(repeated, report);
+  PCH_CHECK(!status.Ok() && report.DegenerateFaceCount == 1);
+  PCH_CHECK(Contains(status.Message(), "1 degenerate triangle"));
+  PCH_CHECK(Contains(status.Message(), "not closed")); // its two other edges lost a side
 
   SurfaceMesh duplicated = sphere;
   duplicated.Faces.conservativeResize(duplicated.Faces.rows() + 1, 3);
