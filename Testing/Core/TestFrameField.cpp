@@ -1,0 +1,460 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The frame field of Fang et al. 2016 §3 on meshes generated here: a rotated cube (every frame
+// aligned with the faces, no singular edge), a cylinder and a round torus (aligned within 10
+// degrees, singular edges reported with their depth), the torus cut open (identity transition),
+// a square torus twisted by a quarter turn and cut (a quarter-turn transition about the tangent),
+// and refusals of bad input.
+#include "CubeSymmetry.h"
+#include "FrameField.h"
+#include "TestAssert.h"
+#include "TetGeometry.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <vector>
+
+using namespace polycubehex;
+
+namespace
+{
+const double Pi = 3.14159265358979323846;
+
+// Flips tets of negative volume into VTK's positive order.
+void Orient(TetMesh& mesh)
+{
+  for (int t = 0; t < mesh.Cells.rows(); ++t)
+  {
+    if (TetSignedVolume(mesh.Vertices, mesh.Cells, t) < 0.0)
+    {
+      std::swap(mesh.Cells(t, 2), mesh.Cells(t, 3));
+    }
+  }
+}
+
+// An n^3 grid of [-1, 1]^3, each cube split into 6 tets around its main diagonal.
+TetMesh MakeCube(int n)
+{
+  TetMesh mesh;
+  const int m = n + 1;
+  mesh.Vertices.resize(m * m * m, 3);
+  auto id = [m](int i, int j, int k) { return (i * m + j) * m + k; };
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k)
+        mesh.Vertices.row(id(i, j, k)) << -1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n,
+          -1.0 + 2.0 * k / n;
+  const int perms[6][3] = {
+    { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 }
+  };
+  mesh.Cells.resize(6 * n * n * n, 4);
+  int t = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+        for (const auto& p : perms)
+        {
+          int c[3] = { i, j, k };
+          mesh.Cells(t, 0) = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s)
+          {
+            ++c[p[s]];
+            mesh.Cells(t, s + 1) = id(c[0], c[1], c[2]);
+          }
+          ++t;
+        }
+  Orient(mesh);
+  return mesh;
+}
+
+// A 2D triangulation: points and counter-clockwise triangles.
+struct Planar
+{
+  std::vector<Eigen::Vector2d> Points;
+  std::vector<std::array<int, 3>> Triangles;
+};
+
+// The unit disk in n concentric rings of 6k points.
+Planar MakeDisk(int n)
+{
+  Planar disk;
+  disk.Points.push_back(Eigen::Vector2d::Zero());
+  std::vector<std::vector<int>> rings = { { 0 } };
+  for (int k = 1; k <= n; ++k)
+  {
+    std::vector<int> ring;
+    for (int j = 0; j < 6 * k; ++j)
+    {
+      const double a = 2.0 * Pi * j / (6 * k);
+      ring.push_back(static_cast<int>(disk.Points.size()));
+      disk.Points.push_back(Eigen::Vector2d(std::cos(a), std::sin(a)) * k / n);
+    }
+    const std::vector<int>& inner = rings.back();
+    const int m0 = static_cast<int>(inner.size());
+    const int m1 = static_cast<int>(ring.size());
+    int i = 0;
+    int j = 0;
+    while (j < m1 || (m0 > 1 && i < m0))
+    {
+      const double nextInner = m0 > 1 ? (i + 1.0) / m0 : 2.0;
+      const double nextOuter = (j + 1.0) / m1;
+      if (j < m1 && (m0 == 1 || i >= m0 || nextOuter <= nextInner))
+      {
+        disk.Triangles.push_back({ inner[i % m0], ring[j % m1], ring[(j + 1) % m1] });
+        ++j;
+      }
+      else
+      {
+        disk.Triangles.push_back({ inner[i % m0], ring[j % m1], inner[(i + 1) % m0] });
+        ++i;
+      }
+    }
+    rings.push_back(ring);
+  }
+  return disk;
+}
+
+// The square [-1, 1]^2 in n^2 cells, each split into 4 triangles at its centre, so that the
+// triangulation is invariant under quarter turns. `quarter` maps each point to its image.
+Planar MakeSquare(int n, std::vector<int>& quarter)
+{
+  Planar square;
+  const int m = n + 1;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      square.Points.push_back(Eigen::Vector2d(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+    {
+      const int centre = static_cast<int>(square.Points.size());
+      square.Points.push_back(
+        Eigen::Vector2d(-1.0 + (2.0 * i + 1.0) / n, -1.0 + (2.0 * j + 1.0) / n));
+      const int c[4] = { i * m + j, (i + 1) * m + j, (i + 1) * m + j + 1, i * m + j + 1 };
+      for (int e = 0; e < 4; ++e)
+      {
+        square.Triangles.push_back({ centre, c[e], c[(e + 1) % 4] });
+      }
+    }
+  quarter.assign(square.Points.size(), -1);
+  for (size_t p = 0; p < square.Points.size(); ++p)
+  {
+    const Eigen::Vector2d image(-square.Points[p](1), square.Points[p](0));
+    for (size_t q = 0; q < square.Points.size(); ++q)
+    {
+      if ((square.Points[q] - image).norm() < 1e-9)
+      {
+        quarter[p] = static_cast<int>(q);
+      }
+    }
+  }
+  return square;
+}
+
+// Sweeps a planar triangulation through `layers` layers of prisms, each split into 3 tets with
+// the diagonal of each side quad from the lower 2D index at the bottom to the higher one at the
+// top (consistent between neighbours). `place(layer, point)` positions the copies; with
+// `periodic` the last layer's top is layer 0 with its points renumbered by `seam`.
+TetMesh Sweep(const Planar& planar,
+  int layers,
+  bool periodic,
+  const std::vector<int>& seam,
+  const std::function<Eigen::Vector3d(int, const Eigen::Vector2d&)>& place)
+{
+  const int nv = static_cast<int>(planar.Points.size());
+  const int copies = periodic ? layers : layers + 1;
+  TetMesh mesh;
+  mesh.Vertices.resize(copies * nv, 3);
+  for (int l = 0; l < copies; ++l)
+    for (int v = 0; v < nv; ++v)
+      mesh.Vertices.row(l * nv + v) = place(l, planar.Points[v]).transpose();
+  mesh.Cells.resize(3 * layers * static_cast<int>(planar.Triangles.size()), 4);
+  int t = 0;
+  for (int l = 0; l < layers; ++l)
+  {
+    for (std::array<int, 3> tri : planar.Triangles)
+    {
+      std::sort(tri.begin(), tri.end());
+      auto bottom = [&](int v) { return l * nv + v; };
+      auto top = [&](int v)
+      {
+        if (periodic && l == layers - 1)
+        {
+          return seam.empty() ? v : seam[v];
+        }
+        return (l + 1) * nv + v;
+      };
+      const int a = tri[0], b = tri[1], c = tri[2];
+      mesh.Cells.row(t++) << bottom(a), bottom(b), bottom(c), top(c);
+      mesh.Cells.row(t++) << bottom(a), bottom(b), top(b), top(c);
+      mesh.Cells.row(t++) << bottom(a), top(a), top(b), top(c);
+    }
+  }
+  Orient(mesh);
+  return mesh;
+}
+
+// The faces between the last layer and layer 0 of a periodic sweep as one cut: minus side in
+// the last layer, plus side in layer 0.
+CutFaces SeamCut(const TetMesh& mesh, int nv, int trianglesPerLayer, int layers)
+{
+  CutFaces cuts;
+  cuts.Ids.setConstant(mesh.Cells.rows(), 4, -1);
+  cuts.Sides.setZero(mesh.Cells.rows(), 4);
+  for (int t = 0; t < mesh.Cells.rows(); ++t)
+  {
+    const int layer = t / (3 * trianglesPerLayer);
+    if (layer != 0 && layer != layers - 1)
+    {
+      continue;
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      bool onSeam = true;
+      for (int c = 0; c < 3; ++c)
+      {
+        onSeam = onSeam && mesh.Cells(t, TetFaceTable[k][c]) < nv;
+      }
+      if (onSeam)
+      {
+        cuts.Ids(t, k) = 0;
+        cuts.Sides(t, k) = layer == 0 ? 1 : -1;
+      }
+    }
+  }
+  return cuts;
+}
+
+bool Run(const char* name,
+  const TetMesh& mesh,
+  const CutFaces& cuts,
+  const FrameFieldParameters& parameters,
+  FrameFieldResult& result)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const Status status = ComputeFrameField(mesh, cuts, parameters, result);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!status)
+  {
+    std::cerr << name << ": " << status.Message() << "\n";
+    return false;
+  }
+  std::cout << name << ": " << mesh.Cells.rows() << " tets, " << seconds << " s (initial "
+            << result.InitialFieldSeconds << " s, L-BFGS " << result.OptimizationSeconds << " s, "
+            << result.FrameIterations << " iterations"
+            << (result.Converged ? "" : ", not converged") << "), energy "
+            << result.InitialFrameEnergy << " -> " << result.FrameEnergy << ", |g| "
+            << result.FinalGradientNorm << "\n  alignment error "
+            << result.InitialBoundaryAlignmentError << " -> " << result.BoundaryAlignmentError
+            << " deg, singular edges " << result.InitialSingularEdgeCount << " -> "
+            << result.SingularEdgeCount << " (interior " << result.InteriorSingularEdgeCount
+            << ", max depth " << result.MaxSingularEdgeDepth << " of the diagonal)\n";
+  return true;
+}
+
+Eigen::Matrix3d FrameOf(const FrameFieldResult& result, int t)
+{
+  Eigen::Matrix3d r;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      r(a, b) = result.Frames(t, 3 * a + b);
+  return r;
+}
+} // namespace
+
+int main(int, char*[])
+{
+  const FrameFieldParameters parameters;
+
+  // A cube rotated by 30 degrees about a skew axis. The initial field and, without the normal
+  // difference term (5), the optimised field are exactly the cube's axes: every term's gradient
+  // is then a stretch along the axes, which the polar decomposition removes. With the paper's
+  // w_d = 0.01, (5) compares the mapped normals of the two faces at each sharp edge and pulls the
+  // frames there towards each other against the smoothed l1 term, whose slope vanishes at exact
+  // alignment; they settle about 0.1 degree off (measured 1.6e-3).
+  {
+    TetMesh mesh = MakeCube(6);
+    const Eigen::Matrix3d q =
+      Eigen::AngleAxisd(Pi / 6.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+    mesh.Vertices = (mesh.Vertices * q.transpose()).eval(); // x' = Q x
+    mesh.Vertices.rowwise() += Eigen::RowVector3d(5.0, -2.0, 1.0);
+    // The rotated face normals are the columns of Q, so frames should be Pi Q^T.
+    auto deviation = [&q](const Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>& frames)
+    {
+      double worst = 0.0;
+      for (int t = 0; t < frames.rows(); ++t)
+      {
+        Eigen::Matrix3d r;
+        for (int a = 0; a < 9; ++a)
+          r(a / 3, a % 3) = frames(t, a);
+        const int g = BestCubeRotation(r, q.transpose());
+        worst = std::max(worst, (CubeRotationMatrix(g) * r - q.transpose()).cwiseAbs().maxCoeff());
+      }
+      return worst;
+    };
+    FrameFieldParameters exact = parameters;
+    exact.NormalDifferenceWeight = 0.0;
+    FrameFieldResult result;
+    PCH_CHECK(Run("rotated cube, w_d = 0", mesh, CutFaces(), exact, result));
+    std::cout << "  worst deviation from the cube's axes: initial "
+              << deviation(result.InitialFrames) << ", final " << deviation(result.Frames) << "\n";
+    PCH_CHECK(deviation(result.InitialFrames) < 1e-6);
+    PCH_CHECK(deviation(result.Frames) < 1e-6);
+    PCH_CHECK(result.SingularEdgeCount == 0);
+    PCH_CHECK(result.BoundaryAlignmentError < 1e-4);
+    PCH_CHECK(result.CutTransitions.rows() == 0);
+    for (int t = 0; t < result.Frames.rows(); ++t)
+    {
+      PCH_CHECK_NEAR(FrameOf(result, t).determinant(), 1.0, 1e-9);
+    }
+
+    PCH_CHECK(Run("rotated cube, paper weights", mesh, CutFaces(), parameters, result));
+    std::cout << "  worst deviation from the cube's axes: initial "
+              << deviation(result.InitialFrames) << ", final " << deviation(result.Frames) << "\n";
+    PCH_CHECK(deviation(result.InitialFrames) < 1e-6);
+    PCH_CHECK(deviation(result.Frames) < 5e-3);
+    PCH_CHECK(result.SingularEdgeCount == 0);
+    PCH_CHECK(result.BoundaryAlignmentError < 0.1);
+  }
+
+  // A cylinder: radius 1, height 2.
+  {
+    const Planar disk = MakeDisk(6);
+    const TetMesh mesh = Sweep(disk,
+      12,
+      false,
+      {},
+      [](int l, const Eigen::Vector2d& p) { return Eigen::Vector3d(p(0), p(1), 2.0 * l / 12.0); });
+    FrameFieldResult result;
+    PCH_CHECK(Run("cylinder", mesh, CutFaces(), parameters, result));
+    PCH_CHECK(result.BoundaryAlignmentError < 10.0);
+    PCH_CHECK(result.Frames.rows() == mesh.Cells.rows());
+    for (const SingularEdge& edge : result.SingularEdges)
+    {
+      PCH_CHECK(edge.Holonomy != 0 && edge.Depth >= 0.0 && edge.Depth < 0.5);
+    }
+    // Deterministic: a second run gives the same frames bit for bit.
+    FrameFieldResult again;
+    PCH_CHECK(ComputeFrameField(mesh, CutFaces(), parameters, again).Ok());
+    PCH_CHECK(again.Frames == result.Frames);
+    // Abort through the progress callback.
+    double reached = 0.0;
+    const Status aborted = ComputeFrameField(mesh,
+      CutFaces(),
+      parameters,
+      again,
+      [&](double f)
+      {
+        reached = std::max(reached, f);
+        return f < 0.4;
+      });
+    PCH_CHECK(!aborted.Ok());
+    PCH_CHECK(reached >= 0.4 && reached < 0.9); // stopped inside L-BFGS
+  }
+
+  // A round torus, R = 2, r = 0.7, without and with a cut across the tube.
+  {
+    const Planar disk = MakeDisk(5);
+    const int layers = 36;
+    auto place = [layers](int l, const Eigen::Vector2d& p)
+    {
+      const double theta = 2.0 * Pi * l / layers;
+      const double rho = 2.0 + 0.7 * p(0);
+      return Eigen::Vector3d(rho * std::cos(theta), rho * std::sin(theta), 0.7 * p(1));
+    };
+    const TetMesh mesh = Sweep(disk, layers, true, {}, place);
+    FrameFieldResult result;
+    PCH_CHECK(Run("torus", mesh, CutFaces(), parameters, result));
+    PCH_CHECK(result.BoundaryAlignmentError < 10.0);
+
+    const CutFaces cuts = SeamCut(
+      mesh, static_cast<int>(disk.Points.size()), static_cast<int>(disk.Triangles.size()), layers);
+    PCH_CHECK(Run("torus with a cut", mesh, cuts, parameters, result));
+    PCH_CHECK(result.BoundaryAlignmentError < 10.0);
+    PCH_CHECK(result.CutTransitions.rows() == 1);
+    if (result.CutTransitions.rows() == 1)
+    {
+      Eigen::Matrix3i pi;
+      for (int a = 0; a < 9; ++a)
+        pi(a / 3, a % 3) = result.CutTransitions(0, a);
+      std::cout << "  transition\n" << pi << "\n";
+      PCH_CHECK(pi == Eigen::Matrix3i::Identity());
+    }
+  }
+
+  // A square torus whose section turns by a quarter turn once around, cut across the tube.
+  {
+    std::vector<int> quarter;
+    const Planar square = MakeSquare(4, quarter);
+    const int layers = 40;
+    auto place = [layers](int l, const Eigen::Vector2d& p)
+    {
+      const double theta = 2.0 * Pi * l / layers;
+      const double twist = 0.5 * Pi * l / layers;
+      const Eigen::Vector2d s = Eigen::Rotation2Dd(twist) * p;
+      const double rho = 2.5 + 0.6 * s(0);
+      return Eigen::Vector3d(rho * std::cos(theta), rho * std::sin(theta), 0.6 * s(1));
+    };
+    // Layer `layers` is layer 0 turned by a quarter: point v lands where quarter[v] is.
+    const TetMesh mesh = Sweep(square, layers, true, quarter, place);
+    const CutFaces cuts = SeamCut(mesh,
+      static_cast<int>(square.Points.size()),
+      static_cast<int>(square.Triangles.size()),
+      layers);
+    FrameFieldResult result;
+    PCH_CHECK(Run("twisted square torus with a cut", mesh, cuts, parameters, result));
+    PCH_CHECK(result.BoundaryAlignmentError < 10.0);
+    PCH_CHECK(result.CutTransitions.rows() == 1);
+    if (result.CutTransitions.rows() == 1)
+    {
+      Eigen::Matrix3i pi;
+      for (int a = 0; a < 9; ++a)
+        pi(a / 3, a % 3) = result.CutTransitions(0, a);
+      std::cout << "  transition\n" << pi << "\n";
+      const int index = CubeRotationIndex(pi);
+      PCH_CHECK(index >= 0 && ClassifyCubeRotation(index) == CubeRotationClass::QuarterTurn);
+      // Its axis is the frame axis along the tube's tangent at the seam, +-y there.
+      int axis = -1;
+      for (int a = 0; a < 3; ++a)
+        if (pi(a, a) == 1)
+          axis = a;
+      double along = 0.0;
+      for (int t = 0; t < mesh.Cells.rows(); ++t)
+        if (cuts.Ids.row(t).maxCoeff() >= 0 && axis >= 0)
+          along = std::max(along, std::fabs(FrameOf(result, t)(axis, 1)));
+      PCH_CHECK(along > 0.95);
+    }
+  }
+
+  // Refusals: inconsistent cut sides, an inverted tet.
+  {
+    TetMesh mesh = MakeCube(2);
+    FrameFieldResult result;
+    CutFaces cuts;
+    cuts.Ids.setConstant(mesh.Cells.rows(), 4, -1);
+    cuts.Sides.setZero(mesh.Cells.rows(), 4);
+    TetTopology topology;
+    ComputeTetTopology(static_cast<int>(mesh.Vertices.rows()), mesh.Cells, topology);
+    for (int k = 0; k < 4; ++k)
+    {
+      if (topology.Neighbors(0, k) >= 0)
+      {
+        cuts.Ids(0, k) = 0;
+        cuts.Sides(0, k) = -1; // the tet across it is left uncut
+        break;
+      }
+    }
+    Status status = ComputeFrameField(mesh, cuts, parameters, result);
+    std::cout << "refused: " << status.Message() << "\n";
+    PCH_CHECK(!status);
+    std::swap(mesh.Cells(3, 0), mesh.Cells(3, 1));
+    status = ComputeFrameField(mesh, CutFaces(), parameters, result);
+    std::cout << "refused: " << status.Message() << "\n";
+    PCH_CHECK(!status);
+  }
+  return PCH_TEST_RESULT();
+}
