@@ -101,8 +101,50 @@ def run_model(path, repeat):
         grid = data
     row["tets"] = grid.GetNumberOfCells()
     row["boundary tris"] = boundary_triangles(grid)
-    # Later stages join here as their filters land: cuts, frame field, polycube, hexes.
+
+    # §2: cuts.
+    cuts, row["cut s"] = timed(lambda: run_filter(polycubehex.vtkHandleCutFilter(), grid), repeat)
+    if cuts is None:
+        row["cuts"] = "failed"
+        return row
+    fields = cuts.GetFieldData()
+    row["beta_1"] = int(fields.GetArray("BettiNumber").GetTuple1(0))
+    areas = fields.GetArray("CutArea")
+    diagonal = diagonal_of(grid)
+    row["cuts"] = areas.GetNumberOfTuples()
+    # Cut areas relative to the squared bounding-box diagonal, so that models compare.
+    row["cut areas / d^2"] = " ".join("%.2g" % (areas.GetValue(i) / diagonal ** 2)
+                                      for i in range(areas.GetNumberOfTuples())) or "-"
+
+    # §3: frame field on the cut mesh.
+    frames, row["frame s"] = timed(
+        lambda: run_filter(polycubehex.vtkFrameFieldFilter(), cuts), repeat)
+    if frames is not None:
+        fields = frames.GetFieldData()
+        row["align deg"] = fields.GetArray("BoundaryAlignmentError").GetTuple1(0)
+        row["singular"] = int(fields.GetArray("SingularEdgeCount").GetTuple1(0))
+        row["max depth"] = fields.GetArray("MaxSingularEdgeDepth").GetTuple1(0)
+        transitions = fields.GetArray("CutTransitions")
+        row["non-identity transitions"] = sum(
+            1 for c in range(transitions.GetNumberOfTuples())
+            if transitions.GetTuple(c) != (1, 0, 0, 0, 1, 0, 0, 0, 1))
     return row
+
+
+def diagonal_of(data):
+    bounds = data.GetBounds()
+    return sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
+
+
+def run_filter(algorithm, data):
+    """Runs `algorithm` on `data`; returns port 0's output, or None when the filter failed."""
+    algorithm.SetInputData(data)
+    if not algorithm.GetExecutive().Update():
+        return None
+    output = algorithm.GetOutputDataObject(0)
+    copy = output.NewInstance()
+    copy.ShallowCopy(output)
+    return copy
 
 
 def format_value(value):
@@ -139,7 +181,9 @@ def main():
         print("benchmarking", os.path.basename(path), file=sys.stderr)
         rows.append(run_model(path, args.repeat))
 
-    columns = ["model", "input", "tets", "boundary tris", "read s", "tetgen s"]
+    columns = ["model", "input", "tets", "boundary tris", "read s", "tetgen s", "beta_1", "cuts",
+               "cut areas / d^2", "cut s", "frame s", "align deg", "singular", "max depth",
+               "non-identity transitions"]
     paper_columns = ["model", "method", "#tet", "#hex", "frame s", "polycube min", "corners",
                      "SJ min", "SJ mean", "dist mean", "Hausdorff"]
     paper_rows = [dict(zip(paper_columns, (model, method) + values))
