@@ -1,0 +1,429 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "HexExtraction.h"
+
+#include "HexLatticeExtraction.h"
+#include "HexMeshValidity.h"
+#include "HexPadding.h"
+#include "HexResolution.h"
+#include "HexScaledJacobian.h"
+#include "HexSmoothing.h"
+#include "IntegerRounding.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace polycubehex
+{
+namespace
+{
+constexpr int FaceTable[4][3] = { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 2, 1 } };
+
+double Seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+double SignedVolume(const Points& x, const Tets& cells, int t)
+{
+  const Eigen::Vector3d a = x.row(cells(t, 0)).transpose();
+  return (x.row(cells(t, 1)).transpose() - a)
+           .dot((x.row(cells(t, 2)).transpose() - a).cross(x.row(cells(t, 3)).transpose() - a)) /
+    6.0;
+}
+
+/// Refuses a mesh with a non-positive tet; `volume` receives the total volume.
+Status CheckPositive(const Points& x, const Tets& cells, const char* space, double& volume)
+{
+  // Relative to the bounding-box diagonal cubed: flat tets count as inverted.
+  const double diagonal = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+  const double epsilon = 1e-14 * diagonal * diagonal * diagonal;
+  int bad = 0;
+  int first = -1;
+  double firstVolume = 0.0;
+  volume = 0.0;
+  for (int t = 0; t < cells.rows(); ++t)
+  {
+    const double v = SignedVolume(x, cells, t);
+    volume += v;
+    if (!(v > epsilon))
+    {
+      first = bad == 0 ? t : first;
+      firstVolume = bad == 0 ? v : firstVolume;
+      ++bad;
+    }
+  }
+  if (bad > 0)
+  {
+    std::ostringstream message;
+    message << bad << " tet(s) are inverted or flat in the " << space << " positions (first: tet "
+            << first << ", volume " << firstVolume << "); hex extraction needs positive tets";
+    return Status::Failure(message.str());
+  }
+  return Status::Success();
+}
+
+Status CheckInput(const PolycubeTetMesh& input)
+{
+  const Eigen::Index vertexCount = input.OriginalVertices.rows();
+  if (input.Cells.rows() == 0 || vertexCount == 0)
+  {
+    return Status::Failure("the input has no tets");
+  }
+  if (input.PolycubeVertices.rows() != vertexCount)
+  {
+    return Status::Failure("the input has " + std::to_string(vertexCount) +
+      " original positions but " + std::to_string(input.PolycubeVertices.rows()) +
+      " polycube positions");
+  }
+  if (input.Cells.minCoeff() < 0 || input.Cells.maxCoeff() >= vertexCount)
+  {
+    return Status::Failure("a tet refers to a vertex that does not exist");
+  }
+  if (input.FaceLabels.rows() != input.Cells.rows() || (input.FaceLabels.array() < 0).all())
+  {
+    return Status::Failure("the input has no polycube labels (PolycubeLabels, 4 per tet): "
+                           "run the polycube deformation first");
+  }
+  if (!input.OriginalVertices.allFinite() || !input.PolycubeVertices.allFinite())
+  {
+    return Status::Failure("the input has non-finite positions");
+  }
+  return Status::Success();
+}
+} // namespace
+
+Status extractHexMesh(const PolycubeTetMesh& input,
+  const HexExtractionParameters& params,
+  HexExtractionResult& result,
+  const Progress& progress)
+{
+  result = HexExtractionResult();
+  Status status = CheckInput(input);
+  if (!status)
+  {
+    return status;
+  }
+  if (params.TargetEdgeLength <= 0.0 && params.TargetHexCount < 1)
+  {
+    return Status::Failure("set TargetHexCount >= 1 or TargetEdgeLength > 0");
+  }
+  if (params.Padding && !(params.PaddingThickness > 0.0 && params.PaddingThickness < 0.5))
+  {
+    return Status::Failure("PaddingThickness must lie in (0, 0.5) hex edges");
+  }
+  const Tets& cells = input.Cells;
+
+  // The core works on the input normalised to a unit diagonal (DESIGN.md, "Scale").
+  const Eigen::RowVector3d low = input.OriginalVertices.colwise().minCoeff();
+  const Eigen::RowVector3d high = input.OriginalVertices.colwise().maxCoeff();
+  const Eigen::RowVector3d centre = 0.5 * (low + high);
+  const double diagonal = (high - low).norm() > 0.0 ? (high - low).norm() : 1.0;
+  const Points original = (input.OriginalVertices.rowwise() - centre) / diagonal;
+
+  double inputVolume = 0.0;
+  double polycubeVolume = 0.0;
+  if (!(status = CheckPositive(original, cells, "original", inputVolume)))
+  {
+    return status;
+  }
+  if (!(status = CheckPositive(input.PolycubeVertices, cells, "polycube", polycubeVolume)))
+  {
+    return status;
+  }
+
+  ChartPlanes charts;
+  if (!(status = ComputeChartPlanes(input.PolycubeVertices, cells, input.FaceLabels, charts)))
+  {
+    return status;
+  }
+  result.ChartCount = static_cast<int>(charts.ChartLabel.size());
+  result.PlaneCount = static_cast<int>(charts.PlaneAxis.size());
+
+  // Each labelled face must face its label's direction in the polycube, and its area counts
+  // towards the padding layer's share of the hex budget.
+  double polycubeArea = 0.0;
+  int against = 0;
+  int firstAgainst = -1;
+  for (int t = 0; t < cells.rows(); ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int label = input.FaceLabels(t, k);
+      if (label < 0)
+      {
+        continue;
+      }
+      const Eigen::Vector3d a = input.PolycubeVertices.row(cells(t, FaceTable[k][0])).transpose();
+      const Eigen::Vector3d b = input.PolycubeVertices.row(cells(t, FaceTable[k][1])).transpose();
+      const Eigen::Vector3d c = input.PolycubeVertices.row(cells(t, FaceTable[k][2])).transpose();
+      const Eigen::Vector3d normal = (b - a).cross(c - a);
+      polycubeArea += 0.5 * normal.norm();
+      const double along = (label % 2 == 0 ? 1.0 : -1.0) * normal[label / 2];
+      if (!(along > 0.5 * normal.norm()))
+      {
+        firstAgainst = against == 0 ? t : firstAgainst;
+        ++against;
+      }
+    }
+  }
+  if (against > 0)
+  {
+    return Status::Failure(std::to_string(against) +
+      " boundary faces do not face the direction of their polycube label in the polycube (first "
+      "in tet " +
+      std::to_string(firstAgainst) + "); the labels and the polycube positions disagree");
+  }
+
+  // 1. Resolution.
+  result.LatticeScale = ComputeLatticeScale(polycubeVolume,
+    polycubeArea,
+    inputVolume * diagonal * diagonal * diagonal,
+    params.TargetHexCount,
+    params.TargetEdgeLength,
+    params.Padding);
+  if (!(result.LatticeScale > 0.0))
+  {
+    return Status::Failure("cannot choose a resolution from these targets");
+  }
+  const Eigen::RowVector3d polycubeCentre = 0.5 *
+    (input.PolycubeVertices.colwise().minCoeff() + input.PolycubeVertices.colwise().maxCoeff());
+
+  // 2. Integer planes. Whether greedy rounding keeps every tet positive depends on where the
+  //    planes fall between integers, so a failure is retried at slightly different scales (the
+  //    hex count is a target, not a promise); the first success wins.
+  auto start = std::chrono::steady_clock::now();
+  IntegerRoundingParameters rounding;
+  rounding.CandidateCount = params.RoundingCandidates;
+  rounding.MinimumVolumeRatio = params.MinimumVolumeRatio;
+  IntegerRoundingResult rounded;
+  const double factors[] = { 1.0, 1.03, 0.97, 1.06, 0.94, 1.1, 0.9 };
+  const int attempts = std::max(1, std::min(params.RoundingAttempts, 7));
+  const double targetScale = result.LatticeScale;
+  for (int attempt = 0; attempt < attempts; ++attempt)
+  {
+    result.LatticeScale = targetScale * factors[attempt];
+    const Points reference =
+      (input.PolycubeVertices.rowwise() - polycubeCentre) * result.LatticeScale;
+    status = roundPolycubePlanes(original,
+      reference,
+      cells,
+      charts,
+      rounding,
+      rounded,
+      [&progress](double p) { return ReportProgress(progress, 0.3 * p); });
+    result.RoundingAttempts = attempt + 1;
+    if (status || status.Message().find("aborted") != std::string::npos)
+    {
+      break;
+    }
+  }
+  if (!status)
+  {
+    return status;
+  }
+  result.RoundedPolycube = rounded.Positions;
+  result.RoundingFallbackCount = rounded.FallbackCount;
+  result.MaxPlaneShift = rounded.MaxPlaneShift;
+  result.RoundingMinVolumeRatio = rounded.MinVolumeRatio;
+  result.RoundingSeconds = Seconds(start);
+
+  // 3. Lattice cubes.
+  start = std::chrono::steady_clock::now();
+  LatticeHexMesh lattice;
+  status = extractLatticeHexes(original,
+    rounded.Positions,
+    cells,
+    charts,
+    LatticeExtractionParameters(),
+    lattice,
+    [&progress](double p) { return ReportProgress(progress, 0.3 + 0.3 * p); });
+  if (!status)
+  {
+    return status;
+  }
+  if (lattice.Mesh.Cells.rows() == 0)
+  {
+    return Status::Failure("no hex fits in the polycube at this resolution; raise "
+                           "TargetHexCount or lower TargetEdgeLength");
+  }
+  result.ExtractionSeconds = Seconds(start);
+
+  HexMesh mesh = std::move(lattice.Mesh);
+  std::vector<std::vector<int>> vertexCharts = std::move(lattice.VertexCharts);
+  result.LatticeVertices = lattice.LatticeVertices;
+
+  // 4. Padding layer.
+  start = std::chrono::steady_clock::now();
+  if (params.Padding)
+  {
+    // The inner copy of a boundary vertex moves PaddingThickness hexes inwards along each of
+    // its charts' normals, in the lattice, and is mapped through the tets around the vertex:
+    // so the layer follows the map, and at a concave polycube edge the copy moves along the
+    // bisector as far as its neighbours on either chart.
+    const int oldCount = static_cast<int>(result.LatticeVertices.rows());
+    Points directions = Points::Zero(oldCount, 3);
+    for (int v = 0; v < oldCount; ++v)
+    {
+      bool seen[6] = { false, false, false, false, false, false };
+      for (int chart : vertexCharts[v])
+      {
+        const int label = charts.ChartLabel[chart];
+        if (!seen[label])
+        {
+          seen[label] = true;
+          directions(v, label / 2) += label % 2 == 0 ? -1.0 : 1.0;
+        }
+      }
+    }
+    HexMesh latticeMesh;
+    latticeMesh.Vertices = result.LatticeVertices;
+    latticeMesh.Cells = mesh.Cells;
+    const Points offsets = ComputePaddingOffsets(latticeMesh, directions, params.PaddingThickness);
+    std::vector<Eigen::RowVector3d> copyLattice(oldCount);
+    int unmapped = 0;
+    auto innerPosition = [&](int v) -> Eigen::RowVector3d
+    {
+      const Eigen::Vector3d from = result.LatticeVertices.row(v).transpose();
+      const Eigen::Vector3d to = from + offsets.row(v).transpose();
+      copyLattice[v] = to.transpose();
+      Eigen::RowVector3d image;
+      if (MapLatticePoint(original,
+            rounded.Positions,
+            cells,
+            charts,
+            lattice.VertexTets[v],
+            from,
+            to,
+            1e-9,
+            image))
+      {
+        return image;
+      }
+      // Off the volume (a boundary vertex without charts): the mean of its hexes' centres.
+      ++unmapped;
+      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+      int count = 0;
+      for (int h = 0; h < lattice.HexCenters.rows(); ++h)
+      {
+        for (int k = 0; k < 8; ++k)
+        {
+          if (mesh.Cells(h, k) == v)
+          {
+            mean += lattice.HexCenters.row(h);
+            ++count;
+          }
+        }
+      }
+      copyLattice[v] = from.transpose();
+      return mesh.Vertices.row(v) +
+        2.0 * params.PaddingThickness * (mean / std::max(1, count) - mesh.Vertices.row(v));
+    };
+    HexPaddingResult padding;
+    if (!(status = addPaddingLayer(mesh, innerPosition, padding)))
+    {
+      return status;
+    }
+    result.PaddingHexCount = static_cast<int>(padding.BoundaryQuads.rows());
+    result.UnmappedPaddingVertexCount = unmapped;
+    Points latticeVertices(mesh.Vertices.rows(), 3);
+    latticeVertices.topRows(oldCount) = result.LatticeVertices;
+    for (int v = 0; v < oldCount; ++v)
+    {
+      if (padding.InnerCopy[v] >= 0)
+      {
+        latticeVertices.row(padding.InnerCopy[v]) = copyLattice[v];
+      }
+    }
+    result.LatticeVertices = std::move(latticeVertices);
+    vertexCharts.resize(mesh.Vertices.rows());
+  }
+  result.PaddingSeconds = Seconds(start);
+
+  // 5. Smoothing, boundary vertices held on the input surface.
+  start = std::chrono::steady_clock::now();
+  const Eigen::VectorXd rawQuality = ComputeHexScaledJacobians(mesh);
+  result.ScaledJacobianMinBeforeSmoothing = rawQuality.minCoeff();
+  result.ScaledJacobianMeanBeforeSmoothing = rawQuality.mean();
+  if (params.Smoothing && params.SmoothingIterations > 0)
+  {
+    HexSmoothingSurface surface;
+    surface.Vertices = original;
+    std::vector<std::array<int, 3>> faces;
+    for (int t = 0; t < cells.rows(); ++t)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        if (charts.FaceChart(t, k) >= 0)
+        {
+          faces.push_back(
+            { cells(t, FaceTable[k][0]), cells(t, FaceTable[k][1]), cells(t, FaceTable[k][2]) });
+          surface.FaceChart.push_back(charts.FaceChart(t, k));
+        }
+      }
+    }
+    surface.Faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
+    for (size_t f = 0; f < faces.size(); ++f)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        surface.Faces(static_cast<Eigen::Index>(f), c) = faces[f][c];
+      }
+    }
+    HexSmoothingParameters smoothing;
+    smoothing.Iterations = params.SmoothingIterations;
+    HexSmoothingResult smoothed;
+    status = smoothHexMesh(mesh,
+      vertexCharts,
+      surface,
+      smoothing,
+      smoothed,
+      [&progress](double p) { return ReportProgress(progress, 0.65 + 0.3 * p); });
+    if (!status)
+    {
+      return status;
+    }
+    result.SmoothingSweeps = smoothed.Sweeps;
+  }
+  result.SmoothingSeconds = Seconds(start);
+
+  // 6. Measures and output in the input's units.
+  result.ScaledJacobian = ComputeHexScaledJacobians(mesh);
+  result.HexCount = static_cast<int>(mesh.Cells.rows());
+  result.ScaledJacobianMin = result.ScaledJacobian.minCoeff();
+  result.ScaledJacobianMean = result.ScaledJacobian.mean();
+  result.InvertedHexCount = static_cast<int>((result.ScaledJacobian.array() <= 0.0).count());
+  HexMeshValidity validity;
+  if (checkHexMeshValidity(mesh, validity))
+  {
+    result.IrregularBoundaryVertexCount = validity.IrregularBoundaryVertexCount;
+  }
+  result.BoundaryQuads = ComputeHexBoundaryQuads(mesh);
+  result.BoundaryQuadLabels.assign(result.BoundaryQuads.rows(), -1);
+  for (int q = 0; q < result.BoundaryQuads.rows(); ++q)
+  {
+    // The quad's chart is the one all four of its vertices lie on.
+    std::vector<int> common = vertexCharts[result.BoundaryQuads(q, 0)];
+    for (int k = 1; k < 4; ++k)
+    {
+      const std::vector<int>& other = vertexCharts[result.BoundaryQuads(q, k)];
+      std::vector<int> both;
+      std::set_intersection(
+        common.begin(), common.end(), other.begin(), other.end(), std::back_inserter(both));
+      common.swap(both);
+    }
+    if (common.size() == 1)
+    {
+      result.BoundaryQuadLabels[q] = charts.ChartLabel[common[0]];
+    }
+  }
+  mesh.Vertices = (mesh.Vertices * diagonal).rowwise() + centre;
+  result.Mesh = std::move(mesh);
+  ReportProgress(progress, 1.0);
+  return Status::Success();
+}
+
+} // namespace polycubehex

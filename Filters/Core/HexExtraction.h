@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// All-hex mesh extraction from a polycube-deformed tet mesh (Fang et al. 2016, §4.3): scale to
+// the requested resolution, round every chart plane to an integer (IntegerRounding.h), extract
+// the unit cubes of the lattice per tet and map them back (HexLatticeExtraction.h), then
+// optionally add a padding layer (HexPadding.h) and smooth (HexSmoothing.h).
+//
+// Today the input is a uniform polycube (no cuts): every vertex has one polycube position. The
+// cut transition u_plus = Pi u_minus + t enters later in three places, each designed for it:
+// the rounding (t as integer variables, plus-side coordinates eliminated), the extraction (the
+// walk from a cube's centre to its corners applies the transition on crossing a cut face) and the
+// deduplication (vertices are keyed by coordinate and connected tet region, never by a global
+// hash of lattice coordinates).
+#pragma once
+
+#include "MeshTypes.h"
+#include "Status.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace polycubehex
+{
+
+/// A polycube-deformed tet mesh: port 0 of the deformation (shared/DESIGN.md section 2).
+struct PolycubeTetMesh
+{
+  Points OriginalVertices; ///< #V by 3 input positions (`OriginalPoints`), positive tets
+  Points PolycubeVertices; ///< #V by 3 polycube positions, positive tets, charts flat
+  Tets Cells;              ///< #T by 4 tets in VTK's node order
+  /// #T by 4 `PolycubeLabels`: label 0..5 (+X, -X, +Y, -Y, +Z, -Z) of local face k (vtkTetra
+  /// face order) when it lies on the boundary, -1 otherwise.
+  Tets FaceLabels;
+};
+
+/// Settings of extractHexMesh; the names match the filter's properties.
+struct HexExtractionParameters
+{
+  /// Hexes wanted, padding layer included (default 5000, >= 1). Used when TargetEdgeLength <= 0.
+  int TargetHexCount = 5000;
+  /// Hex edge length wanted, in input units (default 0 = use TargetHexCount). The polycube is
+  /// scaled so that its volume in unit cubes is the input's volume over the edge cubed.
+  double TargetEdgeLength = 0.0;
+  /// Insert one layer of hexes under the boundary (default on).
+  bool Padding = true;
+  /// Thickness of the padding layer before smoothing, in hex edges (default 1/3, in (0, 0.5)):
+  /// a part one hex thick becomes three equal layers (1/2 would merge the copies of its sides).
+  double PaddingThickness = 1.0 / 3.0;
+  /// Quality-guarded Laplacian smoothing after extraction (default on; the paper has none).
+  bool Smoothing = true;
+  /// Smoothing sweeps (default 20, >= 0).
+  int SmoothingIterations = 20;
+  /// Integers tried per chart plane in the greedy rounding (default 4, >= 1).
+  int RoundingCandidates = 4;
+  /// Smallest tet volume ratio (rounded over original polycube) the rounding accepts (default
+  /// 1e-4, in (0, 1)).
+  double MinimumVolumeRatio = 1e-4;
+  /// Scales tried when rounding fails, 1 to 7 (default 5): the target scale, then +-3 %, +-6 %
+  /// (+-10 % for 6 and 7). Where the planes fall between integers decides whether greedy
+  /// rounding can keep every tet positive.
+  int RoundingAttempts = 5;
+};
+
+/// The hex mesh and the measures of shared/DESIGN.md section 4 that the core can compute.
+struct HexExtractionResult
+{
+  HexMesh Mesh;                        ///< in the input's units and position
+  Eigen::VectorXd ScaledJacobian;      ///< #H
+  Quads BoundaryQuads;                 ///< #B by 4, counter-clockwise seen from outside
+  std::vector<int> BoundaryQuadLabels; ///< #B `PolycubeLabel` 0..5 of each boundary quad
+  Points LatticeVertices;              ///< #V by 3 lattice coordinates of each hex vertex
+  Points RoundedPolycube;              ///< #V_tet by 3 tet vertices in lattice units, rounded
+
+  int HexCount = 0;
+  int PaddingHexCount = 0;
+  /// Padding copies placed by the fallback rule (mean of hex centres) because their lattice
+  /// position could not be located in the tets (0 normally).
+  int UnmappedPaddingVertexCount = 0;
+  double ScaledJacobianMin = 0.0;
+  double ScaledJacobianMean = 0.0;
+  int InvertedHexCount = 0; ///< hexes with scaled Jacobian <= 0
+  int IrregularBoundaryVertexCount = 0;
+
+  double LatticeScale = 0.0; ///< lattice units per polycube unit
+  int ChartCount = 0;
+  int PlaneCount = 0;
+  int RoundingFallbackCount = 0; ///< planes not rounded to their nearest integer
+  int RoundingAttempts = 0;      ///< scales tried (1 when the target scale worked)
+  double MaxPlaneShift = 0.0;    ///< largest rounding move of a plane, lattice units
+  double RoundingMinVolumeRatio = 0.0;
+  double ScaledJacobianMinBeforeSmoothing = 0.0;
+  double ScaledJacobianMeanBeforeSmoothing = 0.0;
+  int SmoothingSweeps = 0;
+
+  /// Wall seconds per stage.
+  double RoundingSeconds = 0.0;
+  double ExtractionSeconds = 0.0;
+  double PaddingSeconds = 0.0;
+  double SmoothingSeconds = 0.0;
+};
+
+/// Extracts an all-hex mesh from a polycube-deformed tet mesh.
+/// @return Failure with a readable message when the input is refused (sizes, an inverted or
+///         flat tet in either space, missing or inconsistent labels), when rounding cannot keep
+///         every chart (resolution too low) or when no hex fits.
+Status extractHexMesh(const PolycubeTetMesh& input,
+  const HexExtractionParameters& params,
+  HexExtractionResult& result,
+  const Progress& progress = {});
+
+} // namespace polycubehex

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "HexScaledJacobian.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace polycubehex
+{
+namespace
+{
+/// For each corner c of the hex, the three corners joined to it by an edge, ordered so that
+/// the triple product of the edge vectors is positive on a positively oriented hex.
+constexpr int CornerEdges[8][3] = { { 1, 3, 4 },
+  { 2, 0, 5 },
+  { 3, 1, 6 },
+  { 0, 2, 7 },
+  { 7, 5, 0 },
+  { 4, 6, 1 },
+  { 5, 7, 2 },
+  { 6, 4, 3 } };
+
+/// Normalised triple product; 0 when a vector has (numerically) zero length.
+double NormalisedDeterminant(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c)
+{
+  const double lengths = a.squaredNorm() * b.squaredNorm() * c.squaredNorm();
+  if (!(lengths > std::numeric_limits<double>::min()))
+  {
+    return 0.0;
+  }
+  return a.dot(b.cross(c)) / std::sqrt(lengths);
+}
+} // namespace
+
+double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& x)
+{
+  double result = std::numeric_limits<double>::max();
+  for (int c = 0; c < 8; ++c)
+  {
+    const Eigen::Vector3d origin = x.row(c).transpose();
+    result = std::min(result,
+      NormalisedDeterminant(x.row(CornerEdges[c][0]).transpose() - origin,
+        x.row(CornerEdges[c][1]).transpose() - origin,
+        x.row(CornerEdges[c][2]).transpose() - origin));
+  }
+  // The Jacobian at the centre uses the three principal axes (differences of opposite faces).
+  const Eigen::Vector3d e1 =
+    (x.row(1) + x.row(2) + x.row(5) + x.row(6) - x.row(0) - x.row(3) - x.row(4) - x.row(7))
+      .transpose();
+  const Eigen::Vector3d e2 =
+    (x.row(2) + x.row(3) + x.row(6) + x.row(7) - x.row(0) - x.row(1) - x.row(4) - x.row(5))
+      .transpose();
+  const Eigen::Vector3d e3 =
+    (x.row(4) + x.row(5) + x.row(6) + x.row(7) - x.row(0) - x.row(1) - x.row(2) - x.row(3))
+      .transpose();
+  return std::min(result, NormalisedDeterminant(e1, e2, e3));
+}
+
+double HexScaledJacobian(const HexMesh& mesh, int h)
+{
+  Eigen::Matrix<double, 8, 3> corners;
+  for (int k = 0; k < 8; ++k)
+  {
+    corners.row(k) = mesh.Vertices.row(mesh.Cells(h, k));
+  }
+  return HexScaledJacobian(corners);
+}
+
+Eigen::VectorXd ComputeHexScaledJacobians(const HexMesh& mesh)
+{
+  Eigen::VectorXd result(mesh.Cells.rows());
+  for (Eigen::Index h = 0; h < mesh.Cells.rows(); ++h)
+  {
+    result[h] = HexScaledJacobian(mesh, static_cast<int>(h));
+  }
+  return result;
+}
+
+} // namespace polycubehex

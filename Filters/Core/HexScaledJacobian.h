@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The hex scaled Jacobian of shared/DESIGN.md section 4, computed in the core so that extraction
+// and smoothing can measure what they do without VTK. It follows Verdict's definition (the one
+// vtkMeshQuality reports): the minimum over the 8 corners and the centre of the determinant of
+// three edge (or principal axis) vectors divided by the product of their lengths.
+#pragma once
+
+#include "MeshTypes.h"
+
+#include <Eigen/Core>
+
+namespace polycubehex
+{
+
+/// Scaled Jacobian of one hex given its 8 corners in VTK's node order. 1 for a box, <= 0 for a
+/// hex inverted or flat at some corner; 0 when an edge has zero length.
+double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& corners);
+
+/// Scaled Jacobian of hex `h` of `mesh`.
+double HexScaledJacobian(const HexMesh& mesh, int h);
+
+/// Scaled Jacobian of every hex.
+/// @return #H scaled Jacobians
+Eigen::VectorXd ComputeHexScaledJacobians(const HexMesh& mesh);
+
+} // namespace polycubehex

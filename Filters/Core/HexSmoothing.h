@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Quality-guarded smoothing of an extracted hex mesh (not in the paper; the paper's meshes are
+// the raw extraction). Each vertex moves towards the mean of its neighbours (Laplacian) when that
+// raises the mean scaled Jacobian of its hexes without going below the mesh's minimum; then,
+// around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes.
+// The mesh's minimum scaled Jacobian never decreases. Boundary vertices stay
+// on the input surface: a vertex on one chart slides on that chart's triangles, a vertex on two
+// charts slides along their common feature curve, a vertex on three or more charts is fixed.
+#pragma once
+
+#include "MeshTypes.h"
+#include "Status.h"
+
+#include <vector>
+
+namespace polycubehex
+{
+
+/// The surface boundary vertices stay on: the input's boundary triangles with their charts.
+struct HexSmoothingSurface
+{
+  Points Vertices;            ///< #S by 3 positions (same space as the hex mesh)
+  Triangles Faces;            ///< #F by 3 boundary triangles
+  std::vector<int> FaceChart; ///< #F chart of each triangle
+};
+
+/// Settings of smoothHexMesh.
+struct HexSmoothingParameters
+{
+  /// Gauss-Seidel sweeps over all vertices (default 20, >= 0).
+  int Iterations = 20;
+  /// Smoothing stops after a sweep that raises neither the minimum nor the mean scaled
+  /// Jacobian by this much (default 1e-5).
+  double Tolerance = 1e-5;
+  /// Vertices whose worst hex is within this of the mesh's minimum scaled Jacobian also get a
+  /// pattern search that maximises it (default 0.1, >= 0; a negative value turns it off).
+  double WorstBand = 0.1;
+};
+
+/// Quality before and after.
+struct HexSmoothingResult
+{
+  double MinBefore = 0.0;
+  double MeanBefore = 0.0;
+  double MinAfter = 0.0;
+  double MeanAfter = 0.0;
+  int Sweeps = 0;
+};
+
+/// Smooths `mesh` in place.
+/// @param mesh          #V by 3, #H by 8 hexes in VTK order
+/// @param vertexCharts  #V: charts each vertex lies on (empty for interior vertices)
+/// @param surface       the input's boundary triangles, each with the chart it belongs to
+/// @return Failure when the sizes disagree or the caller aborted.
+Status smoothHexMesh(HexMesh& mesh,
+  const std::vector<std::vector<int>>& vertexCharts,
+  const HexSmoothingSurface& surface,
+  const HexSmoothingParameters& params,
+  HexSmoothingResult& result,
+  const Progress& progress = {});
+
+} // namespace polycubehex

@@ -1,0 +1,1356 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "IntegerRounding.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <Eigen/Sparse>
+#include <ceres/first_order_function.h>
+#include <ceres/gradient_problem.h>
+#include <ceres/gradient_problem_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+namespace polycubehex
+{
+namespace
+{
+constexpr int FaceTable[4][3] = { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 2, 1 } };
+
+const char* const LabelNames[6] = { "+X", "-X", "+Y", "-Y", "+Z", "-Z" };
+
+int FindRoot(std::vector<int>& parent, int i)
+{
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+void Unite(std::vector<int>& parent, int a, int b)
+{
+  a = FindRoot(parent, a);
+  b = FindRoot(parent, b);
+  if (a != b)
+  {
+    parent[std::max(a, b)] = std::min(a, b);
+  }
+}
+
+double SignedVolume(const Points& x, const Tets& cells, int t)
+{
+  const Eigen::Vector3d a = x.row(cells(t, 0)).transpose();
+  const Eigen::Vector3d b = x.row(cells(t, 1)).transpose();
+  const Eigen::Vector3d c = x.row(cells(t, 2)).transpose();
+  const Eigen::Vector3d d = x.row(cells(t, 3)).transpose();
+  return (b - a).dot((c - a).cross(d - a)) / 6.0;
+}
+
+/// Face adjacency through sorted vertex triples; counts faces used by more than two tets.
+int ComputeNeighbors(const Tets& cells, Tets& neighbors)
+{
+  struct Key
+  {
+    std::array<int, 3> Sorted;
+    int Tet;
+    int Local;
+  };
+  const int tetCount = static_cast<int>(cells.rows());
+  std::vector<Key> keys;
+  keys.reserve(4 * static_cast<size_t>(tetCount));
+  for (int t = 0; t < tetCount; ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      Key key{
+        { cells(t, FaceTable[k][0]), cells(t, FaceTable[k][1]), cells(t, FaceTable[k][2]) }, t, k
+      };
+      std::sort(key.Sorted.begin(), key.Sorted.end());
+      keys.push_back(key);
+    }
+  }
+  std::sort(keys.begin(),
+    keys.end(),
+    [](const Key& a, const Key& b)
+    { return a.Sorted != b.Sorted ? a.Sorted < b.Sorted : a.Tet < b.Tet; });
+  neighbors.setConstant(tetCount, 4, -1);
+  int nonManifold = 0;
+  for (size_t i = 0; i < keys.size();)
+  {
+    size_t j = i + 1;
+    while (j < keys.size() && keys[j].Sorted == keys[i].Sorted)
+    {
+      ++j;
+    }
+    if (j - i == 2)
+    {
+      neighbors(keys[i].Tet, keys[i].Local) = keys[i + 1].Tet;
+      neighbors(keys[i + 1].Tet, keys[i + 1].Local) = keys[i].Tet;
+    }
+    else if (j - i > 2)
+    {
+      ++nonManifold;
+    }
+    i = j;
+  }
+  return nonManifold;
+}
+} // namespace
+
+Status ComputeChartPlanes(const Points& positions,
+  const Tets& cells,
+  const Tets& faceLabels,
+  ChartPlanes& charts)
+{
+  const int vertexCount = static_cast<int>(positions.rows());
+  const int tetCount = static_cast<int>(cells.rows());
+  if (tetCount > 0 && (cells.minCoeff() < 0 || cells.maxCoeff() >= vertexCount))
+  {
+    return Status::Failure("a tet refers to a vertex that does not exist");
+  }
+  if (faceLabels.rows() != cells.rows())
+  {
+    return Status::Failure("the polycube labels have " + std::to_string(faceLabels.rows()) +
+      " rows for " + std::to_string(tetCount) + " tets");
+  }
+  const int nonManifold = ComputeNeighbors(cells, charts.Neighbors);
+  if (nonManifold > 0)
+  {
+    return Status::Failure(std::to_string(nonManifold) + " faces are shared by more than two tets");
+  }
+
+  // Every boundary face needs a label and no interior face may have one.
+  int unlabelled = 0;
+  int interiorLabelled = 0;
+  int firstBad = -1;
+  std::vector<int> faces; // boundary faces as t * 4 + k
+  for (int t = 0; t < tetCount; ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int label = faceLabels(t, k);
+      if (label < -1 || label > 5)
+      {
+        return Status::Failure("tet " + std::to_string(t) + " has the polycube label " +
+          std::to_string(label) + " on face " + std::to_string(k) + " (valid: -1, 0..5)");
+      }
+      const bool boundary = charts.Neighbors(t, k) < 0;
+      if (boundary && label < 0)
+      {
+        firstBad = firstBad < 0 ? t : firstBad;
+        ++unlabelled;
+      }
+      else if (!boundary && label >= 0)
+      {
+        ++interiorLabelled;
+      }
+      if (boundary)
+      {
+        faces.push_back(4 * t + k);
+      }
+    }
+  }
+  if (unlabelled > 0)
+  {
+    return Status::Failure(std::to_string(unlabelled) + " of " + std::to_string(faces.size()) +
+      " boundary faces have no polycube label (first in tet " + std::to_string(firstBad) +
+      "): hex extraction needs PolycubeLabels 0..5 on every boundary face");
+  }
+  if (interiorLabelled > 0)
+  {
+    return Status::Failure(std::to_string(interiorLabelled) +
+      " interior faces carry a polycube label; only boundary faces may have one");
+  }
+
+  // Charts: boundary faces with one label joined through boundary edges.
+  const int faceCount = static_cast<int>(faces.size());
+  std::map<std::pair<int, int>, std::vector<int>> edgeFaces;
+  for (int f = 0; f < faceCount; ++f)
+  {
+    const int t = faces[f] / 4;
+    const int k = faces[f] % 4;
+    for (int e = 0; e < 3; ++e)
+    {
+      const int a = cells(t, FaceTable[k][e]);
+      const int b = cells(t, FaceTable[k][(e + 1) % 3]);
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(f);
+    }
+  }
+  std::vector<int> parent(faceCount);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto labelOf = [&](int f) { return faceLabels(faces[f] / 4, faces[f] % 4); };
+  for (const auto& entry : edgeFaces)
+  {
+    const std::vector<int>& around = entry.second;
+    for (size_t i = 0; i < around.size(); ++i)
+    {
+      for (size_t j = i + 1; j < around.size(); ++j)
+      {
+        if (labelOf(around[i]) == labelOf(around[j]))
+        {
+          Unite(parent, around[i], around[j]);
+        }
+      }
+    }
+  }
+  std::vector<int> chartOfRoot(faceCount, -1);
+  charts.FaceChart.setConstant(tetCount, 4, -1);
+  charts.ChartLabel.clear();
+  for (int f = 0; f < faceCount; ++f)
+  {
+    const int root = FindRoot(parent, f);
+    if (chartOfRoot[root] < 0)
+    {
+      chartOfRoot[root] = static_cast<int>(charts.ChartLabel.size());
+      charts.ChartLabel.push_back(labelOf(f));
+    }
+    charts.FaceChart(faces[f] / 4, faces[f] % 4) = chartOfRoot[root];
+  }
+  const int chartCount = static_cast<int>(charts.ChartLabel.size());
+
+  // Chart adjacency through boundary edges.
+  std::vector<std::set<int>> neighborSets(chartCount);
+  for (const auto& entry : edgeFaces)
+  {
+    for (int f : entry.second)
+    {
+      for (int g : entry.second)
+      {
+        const int cf = charts.FaceChart(faces[f] / 4, faces[f] % 4);
+        const int cg = charts.FaceChart(faces[g] / 4, faces[g] % 4);
+        if (cf != cg)
+        {
+          neighborSets[cf].insert(cg);
+        }
+      }
+    }
+  }
+  charts.ChartNeighbors.assign(chartCount, {});
+  for (int c = 0; c < chartCount; ++c)
+  {
+    charts.ChartNeighbors[c].assign(neighborSets[c].begin(), neighborSets[c].end());
+  }
+
+  // Planes: charts of one axis sharing a vertex give that vertex one coordinate, so they share
+  // their plane.
+  std::vector<std::vector<int>> vertexCharts(vertexCount);
+  for (int f = 0; f < faceCount; ++f)
+  {
+    const int t = faces[f] / 4;
+    const int k = faces[f] % 4;
+    for (int c = 0; c < 3; ++c)
+    {
+      vertexCharts[cells(t, FaceTable[k][c])].push_back(charts.FaceChart(t, k));
+    }
+  }
+  std::vector<int> chartParent(chartCount);
+  std::iota(chartParent.begin(), chartParent.end(), 0);
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    for (size_t i = 0; i < vertexCharts[v].size(); ++i)
+    {
+      for (size_t j = i + 1; j < vertexCharts[v].size(); ++j)
+      {
+        const int a = vertexCharts[v][i];
+        const int b = vertexCharts[v][j];
+        if (charts.ChartLabel[a] / 2 == charts.ChartLabel[b] / 2)
+        {
+          Unite(chartParent, a, b);
+        }
+      }
+    }
+  }
+  charts.ChartPlane.assign(chartCount, -1);
+  charts.PlaneAxis.clear();
+  for (int c = 0; c < chartCount; ++c)
+  {
+    const int root = FindRoot(chartParent, c);
+    if (charts.ChartPlane[root] < 0)
+    {
+      charts.ChartPlane[root] = static_cast<int>(charts.PlaneAxis.size());
+      charts.PlaneAxis.push_back(charts.ChartLabel[root] / 2);
+    }
+    charts.ChartPlane[c] = charts.ChartPlane[root];
+  }
+  charts.VertexPlane.setConstant(vertexCount, 3, -1);
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    for (int c : vertexCharts[v])
+    {
+      charts.VertexPlane(v, charts.ChartLabel[c] / 2) = charts.ChartPlane[c];
+    }
+  }
+
+  // Where the positions put each plane: the mean coordinate of its vertices.
+  std::vector<double> planeValue(charts.PlaneAxis.size(), 0.0);
+  std::vector<int> planeCount(charts.PlaneAxis.size(), 0);
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const int p = charts.VertexPlane(v, a);
+      if (p >= 0)
+      {
+        planeValue[p] += positions(v, a);
+        ++planeCount[p];
+      }
+    }
+  }
+  for (size_t p = 0; p < planeValue.size(); ++p)
+  {
+    planeValue[p] /= std::max(1, planeCount[p]);
+  }
+
+  // Plane pairs that must not collapse, each stored (lower, upper).
+  std::set<std::array<int, 2>> pairs;
+  auto addPair = [&](int low, int high)
+  {
+    if (low >= 0 && high >= 0 && low != high && planeValue[low] < planeValue[high])
+    {
+      pairs.insert({ low, high });
+    }
+  };
+  // A tet whose vertices lie on two planes of one axis is flattened if they meet.
+  for (int t = 0; t < tetCount; ++t)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        for (int j = 0; j < 4; ++j)
+        {
+          addPair(charts.VertexPlane(cells(t, i), a), charts.VertexPlane(cells(t, j), a));
+        }
+      }
+    }
+  }
+  // A chart C spans, along an axis b of a neighbour D, from the neighbours it leaves towards +b
+  // (it lies above them) to those it leaves towards -b: each such lower bound must stay below
+  // each upper bound. Two neighbours on the same side (steps of a staircase seen from the big
+  // chart on top of it) are not constrained through C: only the riser between them is.
+  std::vector<std::set<int>> lowerBounds(chartCount);
+  std::vector<std::set<int>> upperBounds(chartCount);
+  for (const auto& entry : edgeFaces)
+  {
+    const std::vector<int>& around = entry.second;
+    for (int f : around)
+    {
+      for (int g : around)
+      {
+        const int cf = charts.FaceChart(faces[f] / 4, faces[f] % 4);
+        const int cg = charts.FaceChart(faces[g] / 4, faces[g] % 4);
+        const int b = charts.ChartLabel[cg] / 2;
+        if (cf == cg || charts.ChartLabel[cf] / 2 == b)
+        {
+          continue;
+        }
+        // The corner of face f off the shared edge tells on which side of D's plane C lies.
+        const int t = faces[f] / 4;
+        const int k = faces[f] % 4;
+        double offset = 0.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          const int w = cells(t, FaceTable[k][c]);
+          if (w != entry.first.first && w != entry.first.second)
+          {
+            offset = positions(w, b) -
+              0.5 * (positions(entry.first.first, b) + positions(entry.first.second, b));
+          }
+        }
+        if (offset > 0.0)
+        {
+          lowerBounds[cf].insert(cg);
+        }
+        else if (offset < 0.0)
+        {
+          upperBounds[cf].insert(cg);
+        }
+      }
+    }
+  }
+  for (int c = 0; c < chartCount; ++c)
+  {
+    for (int low : lowerBounds[c])
+    {
+      for (int high : upperBounds[c])
+      {
+        if (charts.ChartLabel[low] / 2 == charts.ChartLabel[high] / 2)
+        {
+          addPair(charts.ChartPlane[low], charts.ChartPlane[high]);
+        }
+      }
+    }
+  }
+  charts.PlanePairs.assign(pairs.begin(), pairs.end());
+  return Status::Success();
+}
+
+// ------------------------------------------------------------------------------------------
+
+struct PolycubePlaneSolver::Impl
+{
+  Tets Cells;
+  Points Reference;
+  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> VertexPlane;
+  /// Index of coordinate (v, a) among the free coordinates, or -1 when it lies on a plane.
+  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> FreeIndex;
+  int FreeCount = 0;
+  int PlaneCount = 0;
+  std::vector<double> RestVolume;      ///< #T volumes in the rest positions
+  std::vector<double> ReferenceVolume; ///< #T volumes in the reference polycube
+  /// Per tet, the gradients of the 4 barycentric coordinates on the rest tet (rows).
+  std::vector<Eigen::Matrix<double, 4, 3>> Gradients;
+  /// Per tet, the Jacobian of the reference polycube with respect to the rest positions.
+  std::vector<Eigen::Matrix3d> ReferenceJacobian;
+  /// Per vertex, its tets.
+  std::vector<std::vector<int>> VertexTets;
+  Eigen::SparseMatrix<double> Acc; ///< free x free block
+  Eigen::SparseMatrix<double> Acp; ///< free x plane block
+  Eigen::VectorXd Bc;              ///< free part of the linear term
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> Factor;
+};
+
+PolycubePlaneSolver::PolycubePlaneSolver() = default;
+PolycubePlaneSolver::~PolycubePlaneSolver() = default;
+
+Status PolycubePlaneSolver::Build(const Points& rest,
+  const Points& reference,
+  const Tets& cells,
+  const ChartPlanes& charts)
+{
+  this->Data = std::make_unique<Impl>();
+  Impl& d = *this->Data;
+  const int vertexCount = static_cast<int>(reference.rows());
+  const int tetCount = static_cast<int>(cells.rows());
+  d.Cells = cells;
+  d.Reference = reference;
+  d.VertexPlane = charts.VertexPlane;
+  d.PlaneCount = static_cast<int>(charts.PlaneAxis.size());
+  if (charts.VertexPlane.rows() != vertexCount)
+  {
+    return Status::Failure("the charts were computed for another vertex count");
+  }
+
+  d.FreeIndex.setConstant(vertexCount, 3, -1);
+  d.FreeCount = 0;
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (d.VertexPlane(v, a) < 0)
+      {
+        d.FreeIndex(v, a) = d.FreeCount++;
+      }
+    }
+  }
+
+  // Reference plane values: the mean coordinate of their vertices.
+  this->RefPlanes = Eigen::VectorXd::Zero(d.PlaneCount);
+  Eigen::VectorXd counts = Eigen::VectorXd::Zero(d.PlaneCount);
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const int p = d.VertexPlane(v, a);
+      if (p >= 0)
+      {
+        this->RefPlanes[p] += reference(v, a);
+        counts[p] += 1.0;
+      }
+    }
+  }
+  for (int p = 0; p < d.PlaneCount; ++p)
+  {
+    this->RefPlanes[p] /= std::max(1.0, counts[p]);
+  }
+
+  // FEM stiffness of each tet on the rest positions: K_ij = V grad(l_i) . grad(l_j), identical
+  // for the three axes. The linear term is K times the reference, so that the reference is the
+  // unconstrained minimiser.
+  if (rest.rows() != vertexCount)
+  {
+    return Status::Failure("the rest and reference positions differ in size");
+  }
+  d.VertexTets.assign(vertexCount, {});
+  for (int t = 0; t < tetCount; ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      d.VertexTets[cells(t, k)].push_back(t);
+    }
+  }
+  d.RestVolume.resize(tetCount);
+  d.ReferenceVolume.resize(tetCount);
+  d.Gradients.resize(tetCount);
+  d.ReferenceJacobian.resize(tetCount);
+  std::vector<Eigen::Triplet<double>> cc;
+  std::vector<Eigen::Triplet<double>> cp;
+  std::vector<Eigen::Triplet<double>> pp;
+  Eigen::VectorXd bp = Eigen::VectorXd::Zero(d.PlaneCount);
+  d.Bc = Eigen::VectorXd::Zero(d.FreeCount);
+  for (int t = 0; t < tetCount; ++t)
+  {
+    Eigen::Matrix3d edges;
+    Eigen::Matrix3d mapped;
+    for (int i = 0; i < 3; ++i)
+    {
+      edges.col(i) = (rest.row(cells(t, i + 1)) - rest.row(cells(t, 0))).transpose();
+      mapped.col(i) = (reference.row(cells(t, i + 1)) - reference.row(cells(t, 0))).transpose();
+    }
+    const double volume = edges.determinant() / 6.0;
+    d.ReferenceVolume[t] = mapped.determinant() / 6.0;
+    if (!(volume > 0.0) || !(d.ReferenceVolume[t] > 0.0))
+    {
+      return Status::Failure("tet " + std::to_string(t) + " is inverted or flat in the " +
+        (volume > 0.0 ? "polycube" : "rest positions"));
+    }
+    d.RestVolume[t] = volume;
+    const Eigen::Matrix3d inverse = edges.inverse();
+    Eigen::Matrix<double, 4, 3> gradients;
+    gradients.block<3, 3>(1, 0) = inverse;
+    gradients.row(0) = -inverse.colwise().sum();
+    d.Gradients[t] = gradients;
+    d.ReferenceJacobian[t] = mapped * inverse;
+    const Eigen::Matrix4d stiffness = volume * gradients * gradients.transpose();
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        const int vi = cells(t, i);
+        double row = 0.0;
+        for (int j = 0; j < 4; ++j)
+        {
+          row += stiffness(i, j) * reference(cells(t, j), a);
+        }
+        const int fi = d.FreeIndex(vi, a);
+        if (fi >= 0)
+        {
+          d.Bc[fi] += row;
+        }
+        else
+        {
+          bp[d.VertexPlane(vi, a)] += row;
+        }
+        for (int j = 0; j < 4; ++j)
+        {
+          const int vj = cells(t, j);
+          const int fj = d.FreeIndex(vj, a);
+          const double value = stiffness(i, j);
+          if (fi >= 0 && fj >= 0)
+          {
+            cc.emplace_back(fi, fj, value);
+          }
+          else if (fi >= 0)
+          {
+            cp.emplace_back(fi, d.VertexPlane(vj, a), value);
+          }
+          else if (fj < 0)
+          {
+            pp.emplace_back(d.VertexPlane(vi, a), d.VertexPlane(vj, a), value);
+          }
+        }
+      }
+    }
+  }
+  d.Acc.resize(d.FreeCount, d.FreeCount);
+  d.Acc.setFromTriplets(cc.begin(), cc.end());
+  d.Acp.resize(d.FreeCount, d.PlaneCount);
+  d.Acp.setFromTriplets(cp.begin(), cp.end());
+  Eigen::SparseMatrix<double> app(d.PlaneCount, d.PlaneCount);
+  app.setFromTriplets(pp.begin(), pp.end());
+
+  if (d.FreeCount > 0)
+  {
+    d.Factor.compute(d.Acc);
+    if (d.Factor.info() != Eigen::Success || (d.Factor.vectorD().array() <= 0.0).any())
+    {
+      return Status::Failure("the polycube's free coordinates are not pinned by its charts (a "
+                             "connected part lacks charts of some axis)");
+    }
+  }
+
+  // Schur complement onto the planes: H = App - Apc Acc^-1 Acp, g = bp - Apc Acc^-1 bc.
+  this->H = Eigen::MatrixXd(app);
+  this->G = bp;
+  if (d.FreeCount > 0)
+  {
+    const Eigen::SparseMatrix<double> apc = d.Acp.transpose();
+    for (int p = 0; p < d.PlaneCount; ++p)
+    {
+      const Eigen::VectorXd column = Eigen::VectorXd(d.Acp.col(p));
+      if (column.squaredNorm() == 0.0)
+      {
+        continue;
+      }
+      const Eigen::VectorXd z = d.Factor.solve(column);
+      this->H.col(p) -= apc * z;
+    }
+    this->G -= apc * d.Factor.solve(d.Bc);
+  }
+  this->H = 0.5 * (this->H + this->H.transpose()).eval();
+  return Status::Success();
+}
+
+void PolycubePlaneSolver::Solve(const Eigen::VectorXd& planes, Points& positions) const
+{
+  const Impl& d = *this->Data;
+  const int vertexCount = static_cast<int>(d.Reference.rows());
+  Eigen::VectorXd free;
+  if (d.FreeCount > 0)
+  {
+    free = d.Factor.solve(d.Bc - d.Acp * planes);
+  }
+  positions.resize(vertexCount, 3);
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const int p = d.VertexPlane(v, a);
+      positions(v, a) = p >= 0 ? planes[p] : free[d.FreeIndex(v, a)];
+    }
+  }
+}
+
+double PolycubePlaneSolver::Untangle(Points& positions, double target) const
+{
+  const Impl& d = *this->Data;
+  const int tetCount = static_cast<int>(d.Cells.rows());
+  auto ratio = [&](int t) { return SignedVolume(positions, d.Cells, t) / d.ReferenceVolume[t]; };
+  // Vertices with a free coordinate in a tet below the target, a few sweeps of a pattern search
+  // that maximises the smallest volume ratio of their tets along their free axes.
+  for (int sweep = 0; sweep < 8; ++sweep)
+  {
+    std::vector<int> vertices;
+    for (int t = 0; t < tetCount; ++t)
+    {
+      if (ratio(t) < target)
+      {
+        for (int k = 0; k < 4; ++k)
+        {
+          vertices.push_back(d.Cells(t, k));
+        }
+      }
+    }
+    if (vertices.empty())
+    {
+      break;
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    for (int v : vertices)
+    {
+      const std::vector<int>& around = d.VertexTets[v];
+      auto worst = [&]()
+      {
+        double result = std::numeric_limits<double>::max();
+        for (int t : around)
+        {
+          result = std::min(result, ratio(t));
+        }
+        return result;
+      };
+      double current = worst();
+      if (current >= target)
+      {
+        continue;
+      }
+      // Step: a fraction of the shortest reference edge at v.
+      double length = std::numeric_limits<double>::max();
+      for (int t : around)
+      {
+        for (int k = 0; k < 4; ++k)
+        {
+          const int w = d.Cells(t, k);
+          if (w != v)
+          {
+            length = std::min(length, (d.Reference.row(w) - d.Reference.row(v)).norm());
+          }
+        }
+      }
+      int moves = 0;
+      for (double step = 0.5 * length; step > length / 512.0 && moves < 64 && current < target;
+           ++moves)
+      {
+        bool improved = false;
+        for (int a = 0; a < 3; ++a)
+        {
+          if (d.VertexPlane(v, a) >= 0)
+          {
+            continue;
+          }
+          for (double sign : { 1.0, -1.0 })
+          {
+            positions(v, a) += sign * step;
+            const double moved = worst();
+            if (moved > current)
+            {
+              current = moved;
+              improved = true;
+            }
+            else
+            {
+              positions(v, a) -= sign * step;
+            }
+          }
+        }
+        if (!improved)
+        {
+          step *= 0.5;
+        }
+      }
+    }
+  }
+  return this->MinVolumeRatio(positions);
+}
+
+namespace
+{
+/// The energy the nonlinear untangling minimises over the free coordinates: the distortion
+/// energy plus a penalty Weight * sum_t w_t ((Target - r_t) / Target)^2 on every tet whose
+/// volume ratio r_t is below Target (w_t its share of the rest volume). A penalty, not a
+/// barrier, so that it can start from inverted tets.
+class UntangleFunction : public ceres::FirstOrderFunction
+{
+public:
+  UntangleFunction(const Points& start,
+    const Tets& cells,
+    const Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>& freeIndex,
+    int freeCount,
+    const std::vector<Eigen::Matrix<double, 4, 3>>& gradients,
+    const std::vector<Eigen::Matrix3d>& targets,
+    const std::vector<double>& restVolume,
+    const std::vector<double>& referenceVolume,
+    double target,
+    double weight)
+    : Cells(cells)
+    , FreeIndex(freeIndex)
+    , FreeCount(freeCount)
+    , Gradients(gradients)
+    , Targets(targets)
+    , RestVolume(restVolume)
+    , ReferenceVolume(referenceVolume)
+    , Target(target)
+    , Weight(weight)
+    , X(start)
+  {
+    this->TotalVolume = std::accumulate(restVolume.begin(), restVolume.end(), 0.0);
+  }
+
+  int NumParameters() const override { return this->FreeCount; }
+
+  /// Writes the free coordinates y into the positions.
+  void Scatter(const double* y, Points& x) const
+  {
+    for (int v = 0; v < x.rows(); ++v)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        const int f = this->FreeIndex(v, a);
+        if (f >= 0)
+        {
+          x(v, a) = y[f];
+        }
+      }
+    }
+  }
+
+  bool Evaluate(const double* y, double* cost, double* gradient) const override
+  {
+    this->Scatter(y, this->X);
+    Points g;
+    if (gradient)
+    {
+      g = Points::Zero(this->X.rows(), 3);
+    }
+    double energy = 0.0;
+    for (int t = 0; t < static_cast<int>(this->Cells.rows()); ++t)
+    {
+      const double w = this->RestVolume[t] / this->TotalVolume;
+      Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
+      for (int i = 0; i < 4; ++i)
+      {
+        jacobian += this->X.row(this->Cells(t, i)).transpose() * this->Gradients[t].row(i);
+      }
+      const Eigen::Matrix3d difference = jacobian - this->Targets[t];
+      energy += w * difference.squaredNorm();
+      const Eigen::Vector3d a = this->X.row(this->Cells(t, 0)).transpose();
+      const Eigen::Vector3d b = this->X.row(this->Cells(t, 1)).transpose();
+      const Eigen::Vector3d c = this->X.row(this->Cells(t, 2)).transpose();
+      const Eigen::Vector3d d = this->X.row(this->Cells(t, 3)).transpose();
+      const double ratio = (b - a).dot((c - a).cross(d - a)) / (6.0 * this->ReferenceVolume[t]);
+      const double shortfall = (this->Target - ratio) / this->Target;
+      if (shortfall > 0.0)
+      {
+        energy += this->Weight * w * shortfall * shortfall;
+      }
+      if (gradient)
+      {
+        for (int i = 0; i < 4; ++i)
+        {
+          g.row(this->Cells(t, i)) +=
+            2.0 * w * (difference * this->Gradients[t].row(i).transpose()).transpose();
+        }
+        if (shortfall > 0.0)
+        {
+          // d ratio / d vertex: the gradients of the signed volume, over 6 V_ref.
+          const double scale =
+            -2.0 * this->Weight * w * shortfall / this->Target / (6.0 * this->ReferenceVolume[t]);
+          const Eigen::Vector3d gb = (c - a).cross(d - a);
+          const Eigen::Vector3d gc = (d - a).cross(b - a);
+          const Eigen::Vector3d gd = (b - a).cross(c - a);
+          g.row(this->Cells(t, 0)) += scale * (-(gb + gc + gd)).transpose();
+          g.row(this->Cells(t, 1)) += scale * gb.transpose();
+          g.row(this->Cells(t, 2)) += scale * gc.transpose();
+          g.row(this->Cells(t, 3)) += scale * gd.transpose();
+        }
+      }
+    }
+    *cost = energy;
+    if (gradient)
+    {
+      for (int v = 0; v < g.rows(); ++v)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          const int f = this->FreeIndex(v, a);
+          if (f >= 0)
+          {
+            gradient[f] = g(v, a);
+          }
+        }
+      }
+    }
+    return true;
+  }
+
+private:
+  const Tets& Cells;
+  const Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>& FreeIndex;
+  int FreeCount;
+  const std::vector<Eigen::Matrix<double, 4, 3>>& Gradients;
+  const std::vector<Eigen::Matrix3d>& Targets;
+  const std::vector<double>& RestVolume;
+  const std::vector<double>& ReferenceVolume;
+  double Target;
+  double Weight;
+  double TotalVolume = 1.0;
+  mutable Points X;
+};
+} // namespace
+
+double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target) const
+{
+  const Impl& d = *this->Data;
+  double ratio = this->MinVolumeRatio(positions);
+  if (ratio >= target || d.FreeCount == 0)
+  {
+    return ratio;
+  }
+  std::vector<double> y(d.FreeCount);
+  for (int v = 0; v < positions.rows(); ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (d.FreeIndex(v, a) >= 0)
+      {
+        y[d.FreeIndex(v, a)] = positions(v, a);
+      }
+    }
+  }
+  // Escalate the penalty until every tet is above half the target (or give up).
+  for (double weight : { 1e2, 1e4, 1e6 })
+  {
+    auto* function = new UntangleFunction(positions,
+      d.Cells,
+      d.FreeIndex,
+      d.FreeCount,
+      d.Gradients,
+      d.ReferenceJacobian,
+      d.RestVolume,
+      d.ReferenceVolume,
+      target,
+      weight);
+    ceres::GradientProblem problem(function);
+    ceres::GradientProblemSolver::Options options;
+    options.line_search_direction_type = ceres::LBFGS;
+    options.max_num_iterations = 500;
+    options.logging_type = ceres::SILENT;
+    options.function_tolerance = 1e-12;
+    options.gradient_tolerance = 1e-12;
+    ceres::GradientProblemSolver::Summary summary;
+    ceres::Solve(options, problem, y.data(), &summary);
+    function->Scatter(y.data(), positions);
+    ratio = this->MinVolumeRatio(positions);
+    if (ratio >= 0.5 * target)
+    {
+      break;
+    }
+  }
+  return ratio;
+}
+
+double PolycubePlaneSolver::MinVolumeRatio(const Points& positions) const
+{
+  const Impl& d = *this->Data;
+  double result = std::numeric_limits<double>::max();
+  for (int t = 0; t < static_cast<int>(d.Cells.rows()); ++t)
+  {
+    result = std::min(result, SignedVolume(positions, d.Cells, t) / d.ReferenceVolume[t]);
+  }
+  return result;
+}
+
+namespace
+{
+/// Energy sum_t V_t |grad x - J_t|^2, gradients and volumes on the rest tets.
+double DistortionEnergy(const Points& x,
+  const Tets& cells,
+  const std::vector<Eigen::Matrix<double, 4, 3>>& gradients,
+  const std::vector<double>& volumes,
+  const std::vector<Eigen::Matrix3d>& targets)
+{
+  double energy = 0.0;
+  for (int t = 0; t < static_cast<int>(cells.rows()); ++t)
+  {
+    Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 4; ++i)
+    {
+      jacobian += x.row(cells(t, i)).transpose() * gradients[t].row(i);
+    }
+    energy += volumes[t] * (jacobian - targets[t]).squaredNorm();
+  }
+  return energy;
+}
+
+/// The difference constraints x_q - x_p >= 1 between planes that were apart, as a DAG from the
+/// lower plane to the upper one; longest paths give the interval each plane may take.
+class SeparationGraph
+{
+public:
+  SeparationGraph(const ChartPlanes& charts, const Eigen::VectorXd& reference, double tol)
+  {
+    const int planeCount = static_cast<int>(reference.size());
+    this->Up.assign(planeCount, {});
+    this->Down.assign(planeCount, {});
+    for (const auto& pair : charts.PlanePairs)
+    {
+      const double gap = reference[pair[1]] - reference[pair[0]];
+      if (std::fabs(gap) <= tol)
+      {
+        continue;
+      }
+      const int low = gap > 0.0 ? pair[0] : pair[1];
+      const int high = gap > 0.0 ? pair[1] : pair[0];
+      this->Up[low].push_back(high);
+      this->Down[high].push_back(low);
+      this->Pairs.push_back({ low, high });
+    }
+    // Topological order: increasing reference value (edges go strictly upwards).
+    this->Order.resize(planeCount);
+    std::iota(this->Order.begin(), this->Order.end(), 0);
+    std::stable_sort(this->Order.begin(),
+      this->Order.end(),
+      [&reference](int a, int b) { return reference[a] < reference[b]; });
+    this->Rank.resize(planeCount);
+    for (int i = 0; i < planeCount; ++i)
+    {
+      this->Rank[this->Order[i]] = i;
+    }
+  }
+
+  /// The integers plane p may take given the fixed planes: [low, high].
+  void Interval(int p,
+    const std::vector<bool>& fixed,
+    const Eigen::VectorXd& values,
+    double& low,
+    double& high) const
+  {
+    const int planeCount = static_cast<int>(this->Order.size());
+    low = -std::numeric_limits<double>::infinity();
+    high = std::numeric_limits<double>::infinity();
+    std::vector<int> distance(planeCount, -1);
+    distance[p] = 0;
+    for (int i = this->Rank[p]; i < planeCount; ++i) // longest paths upwards from p
+    {
+      const int u = this->Order[i];
+      if (distance[u] < 0)
+      {
+        continue;
+      }
+      if (u != p && fixed[u])
+      {
+        high = std::min(high, values[u] - distance[u]);
+      }
+      for (int w : this->Up[u])
+      {
+        distance[w] = std::max(distance[w], distance[u] + 1);
+      }
+    }
+    std::fill(distance.begin(), distance.end(), -1);
+    distance[p] = 0;
+    for (int i = this->Rank[p]; i >= 0; --i) // and downwards
+    {
+      const int u = this->Order[i];
+      if (distance[u] < 0)
+      {
+        continue;
+      }
+      if (u != p && fixed[u])
+      {
+        low = std::max(low, values[u] + distance[u]);
+      }
+      for (int w : this->Down[u])
+      {
+        distance[w] = std::max(distance[w], distance[u] + 1);
+      }
+    }
+  }
+
+  /// The constraints as (lower, upper) pairs.
+  const std::vector<std::array<int, 2>>& Edges() const { return this->Pairs; }
+
+private:
+  std::vector<std::array<int, 2>> Pairs;
+  std::vector<std::vector<int>> Up;
+  std::vector<std::vector<int>> Down;
+  std::vector<int> Order;
+  std::vector<int> Rank;
+};
+
+/// Minimises P^T H P - 2 g^T P over the free planes with the fixed ones held, plus a tiny pull
+/// towards the current values that pins the translations the energy does not see, keeping each
+/// separated pair (lower, upper) at least one unit apart: violated pairs become equalities
+/// upper = lower + 1 (an active set that only grows), which chains planes into groups with
+/// fixed offsets. The result predicts where the free planes will end, in the right order.
+void SolveFreePlanes(const Eigen::MatrixXd& H,
+  const Eigen::VectorXd& g,
+  const std::vector<bool>& fixed,
+  const std::vector<std::array<int, 2>>& separations,
+  Eigen::VectorXd& planes)
+{
+  const int planeCount = static_cast<int>(fixed.size());
+  const double regularisation = 1e-10 * std::max(1.0, H.diagonal().cwiseAbs().maxCoeff());
+  std::vector<int> parent(planeCount);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<double> offset(planeCount, 0.0); // value(p) = value(parent[p]) + offset[p]
+  auto root = [&](int p)
+  {
+    double total = 0.0;
+    while (parent[p] != p)
+    {
+      total += offset[p];
+      p = parent[p];
+    }
+    return std::make_pair(p, total);
+  };
+  const Eigen::VectorXd previous = planes;
+  for (int round = 0; round <= planeCount; ++round)
+  {
+    // Groups: a group with a fixed plane is determined, the others are unknowns.
+    std::vector<int> unknown(planeCount, -1);
+    std::vector<double> known(planeCount, std::numeric_limits<double>::quiet_NaN());
+    for (int p = 0; p < planeCount; ++p)
+    {
+      if (fixed[p])
+      {
+        const auto r = root(p);
+        known[r.first] = planes[p] - r.second;
+      }
+    }
+    int m = 0;
+    for (int p = 0; p < planeCount; ++p)
+    {
+      if (parent[p] == p && std::isnan(known[p]))
+      {
+        unknown[p] = m++;
+      }
+    }
+    if (m > 0)
+    {
+      // P = S y + c; minimise (S y + c)^T H (S y + c) - 2 g^T (S y + c) + reg |y - y_prev|^2.
+      Eigen::MatrixXd S = Eigen::MatrixXd::Zero(planeCount, m);
+      Eigen::VectorXd c = Eigen::VectorXd::Zero(planeCount);
+      Eigen::VectorXd y0 = Eigen::VectorXd::Zero(m);
+      Eigen::VectorXd count = Eigen::VectorXd::Zero(m);
+      for (int p = 0; p < planeCount; ++p)
+      {
+        const auto r = root(p);
+        c[p] = r.second;
+        if (unknown[r.first] >= 0)
+        {
+          S(p, unknown[r.first]) = 1.0;
+          y0[unknown[r.first]] += previous[p] - r.second;
+          count[unknown[r.first]] += 1.0;
+        }
+        else
+        {
+          c[p] += known[r.first];
+        }
+      }
+      y0 = y0.cwiseQuotient(count);
+      Eigen::MatrixXd A = S.transpose() * H * S;
+      A.diagonal().array() += regularisation;
+      const Eigen::VectorXd b = S.transpose() * (g - H * c) + regularisation * y0;
+      planes = S * A.ldlt().solve(b) + c;
+    }
+    else
+    {
+      for (int p = 0; p < planeCount; ++p)
+      {
+        const auto r = root(p);
+        planes[p] = known[r.first] + r.second;
+      }
+    }
+    // Activate the most violated separation whose planes are in different groups.
+    int worst = -1;
+    double violation = 1e-9;
+    for (size_t k = 0; k < separations.size(); ++k)
+    {
+      const int low = separations[k][0];
+      const int high = separations[k][1];
+      const double gap = 1.0 - (planes[high] - planes[low]);
+      if (gap > violation && root(low).first != root(high).first && !(fixed[low] && fixed[high]))
+      {
+        const auto rl = root(low);
+        const auto rh = root(high);
+        if (!std::isnan(known[rl.first]) && !std::isnan(known[rh.first]))
+        {
+          continue; // both groups determined: nothing to move
+        }
+        worst = static_cast<int>(k);
+        violation = gap;
+      }
+    }
+    if (worst < 0)
+    {
+      return;
+    }
+    const auto rl = root(separations[worst][0]);
+    const auto rh = root(separations[worst][1]);
+    // value(high) = value(low) + 1, i.e. root_h + off_h = root_l + off_l + 1.
+    if (std::isnan(known[rh.first]))
+    {
+      parent[rh.first] = rl.first;
+      offset[rh.first] = rl.second + 1.0 - rh.second;
+    }
+    else
+    {
+      parent[rl.first] = rh.first;
+      offset[rl.first] = rh.second - 1.0 - rl.second;
+    }
+  }
+}
+} // namespace
+
+double PolycubePlaneSolver::Energy(const Points& positions) const
+{
+  const Impl& d = *this->Data;
+  return DistortionEnergy(positions, d.Cells, d.Gradients, d.RestVolume, d.ReferenceJacobian);
+}
+
+namespace
+{
+/// Greedy rounding of `planes` (Bommes et al.: the free plane nearest to an integer first; the
+/// others re-solved after each fix). Candidates are the integers allowed by the separations,
+/// nearest first; with `checkVolumes`, a candidate is taken only if the re-solved and locally
+/// untangled polycube keeps every tet above the minimum volume ratio.
+Status GreedyRound(const PolycubePlaneSolver& solver,
+  const ChartPlanes& charts,
+  const SeparationGraph& separation,
+  const IntegerRoundingParameters& params,
+  bool checkVolumes,
+  Eigen::VectorXd& planes,
+  int& fallbackCount,
+  const Progress& progress)
+{
+  const int planeCount = static_cast<int>(planes.size());
+  const int candidateCount = std::max(1, params.CandidateCount);
+  std::vector<bool> fixed(planeCount, false);
+  fallbackCount = 0;
+  Points positions;
+  for (int step = 0; step < planeCount; ++step)
+  {
+    if (!ReportProgress(progress, static_cast<double>(step) / std::max(1, planeCount)))
+    {
+      return Status::Failure("integer rounding aborted");
+    }
+    int chosen = -1;
+    double best = std::numeric_limits<double>::max();
+    for (int p = 0; p < planeCount; ++p)
+    {
+      const double distance = std::fabs(planes[p] - std::round(planes[p]));
+      if (!fixed[p] && distance < best - 1e-12)
+      {
+        best = distance;
+        chosen = p;
+      }
+    }
+    double low = 0.0;
+    double high = 0.0;
+    separation.Interval(chosen, fixed, planes, low, high);
+    // Integers in [low, high], nearest first.
+    std::vector<double> candidates;
+    if (low <= high)
+    {
+      const double nearest = std::clamp(std::round(planes[chosen]), low, high);
+      candidates.push_back(nearest);
+      for (int offset = 1; static_cast<int>(candidates.size()) < candidateCount && offset < 64;
+           ++offset)
+      {
+        const double below = nearest - offset;
+        const double above = nearest + offset;
+        const bool aboveFirst =
+          std::fabs(above - planes[chosen]) < std::fabs(below - planes[chosen]);
+        for (double c : aboveFirst ? std::array<double, 2>{ above, below }
+                                   : std::array<double, 2>{ below, above })
+        {
+          if (c >= low && c <= high && static_cast<int>(candidates.size()) < candidateCount)
+          {
+            candidates.push_back(c);
+          }
+        }
+        if (below < low && above > high)
+        {
+          break;
+        }
+      }
+    }
+    bool accepted = false;
+    for (size_t i = 0; i < candidates.size() && !accepted; ++i)
+    {
+      Eigen::VectorXd trial = planes;
+      trial[chosen] = candidates[i];
+      fixed[chosen] = true;
+      SolveFreePlanes(
+        solver.PlaneHessian(), solver.PlaneGradient(), fixed, separation.Edges(), trial);
+      bool valid = true;
+      if (checkVolumes)
+      {
+        solver.Solve(trial, positions);
+        valid = solver.Untangle(positions, params.UntangleTarget) >= params.MinimumVolumeRatio;
+      }
+      if (valid)
+      {
+        accepted = true;
+        fallbackCount += candidates[i] != std::round(planes[chosen]) ? 1 : 0;
+        planes = trial;
+      }
+      else
+      {
+        fixed[chosen] = false;
+      }
+    }
+    if (!accepted)
+    {
+      int chart = 0;
+      while (
+        chart < static_cast<int>(charts.ChartPlane.size()) && charts.ChartPlane[chart] != chosen)
+      {
+        ++chart;
+      }
+      std::ostringstream message;
+      message << "integer rounding failed: no integer near " << planes[chosen] << " keeps chart "
+              << chart << " (" << LabelNames[charts.ChartLabel[chart]]
+              << ") from collapsing a chart or inverting a tet; increase the resolution";
+      return Status::Failure(message.str());
+    }
+  }
+  return Status::Success();
+}
+} // namespace
+
+Status roundPolycubePlanes(const Points& rest,
+  const Points& reference,
+  const Tets& cells,
+  const ChartPlanes& charts,
+  const IntegerRoundingParameters& params,
+  IntegerRoundingResult& result,
+  const Progress& progress)
+{
+  PolycubePlaneSolver solver;
+  Status status = solver.Build(rest, reference, cells, charts);
+  if (!status)
+  {
+    return status;
+  }
+  const int planeCount = static_cast<int>(charts.PlaneAxis.size());
+  result.PlanesBefore = solver.ReferencePlanes();
+  result.FallbackCount = 0;
+  result.CarefulPath = false;
+
+  // Start from the optimum with the separations (the reference planes when the charts are flat
+  // and every separated pair is at least one unit apart).
+  const SeparationGraph separation(charts, result.PlanesBefore, params.SeparationTolerance);
+  Eigen::VectorXd start = result.PlanesBefore;
+  SolveFreePlanes(solver.PlaneHessian(),
+    solver.PlaneGradient(),
+    std::vector<bool>(planeCount, false),
+    separation.Edges(),
+    start);
+
+  // Fast path: round with the separations only, then re-solve and untangle once.
+  auto finish = [&](const Eigen::VectorXd& planes)
+  {
+    solver.Solve(planes, result.Positions);
+    result.MinVolumeRatio = solver.Untangle(result.Positions, params.UntangleTarget);
+    if (result.MinVolumeRatio < params.MinimumVolumeRatio)
+    {
+      result.MinVolumeRatio = solver.UntangleGlobally(result.Positions, params.UntangleTarget);
+    }
+    return result.MinVolumeRatio >= params.MinimumVolumeRatio;
+  };
+  Eigen::VectorXd planes = start;
+  status = GreedyRound(solver,
+    charts,
+    separation,
+    params,
+    false,
+    planes,
+    result.FallbackCount,
+    [&progress](double p) { return ReportProgress(progress, 0.2 * p); });
+  if (!status)
+  {
+    return status;
+  }
+  if (!finish(planes))
+  {
+    // Careful path: each candidate must keep the re-solved polycube positive.
+    result.CarefulPath = true;
+    planes = start;
+    status = GreedyRound(solver,
+      charts,
+      separation,
+      params,
+      true,
+      planes,
+      result.FallbackCount,
+      [&progress](double p) { return ReportProgress(progress, 0.3 + 0.7 * p); });
+    if (!status)
+    {
+      return status;
+    }
+    if (!finish(planes))
+    {
+      std::ostringstream message;
+      message << "integer rounding failed: the rounded polycube keeps a tet at volume ratio "
+              << result.MinVolumeRatio << " after untangling; increase the resolution";
+      return Status::Failure(message.str());
+    }
+  }
+  result.PlanesAfter = planes;
+  result.MaxPlaneShift =
+    planeCount > 0 ? (result.PlanesAfter - result.PlanesBefore).cwiseAbs().maxCoeff() : 0.0;
+  result.Energy = solver.Energy(result.Positions);
+  ReportProgress(progress, 1.0);
+  return Status::Success();
+}
+
+} // namespace polycubehex

@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Integer constraints for hex extraction (Fang et al. 2016, §4.3): every chart of the polycube
+// is moved onto an integer plane by greedy rounding (Bommes et al. 2009, "Mixed-integer
+// quadrangulation" §4: round the variable nearest to an integer, fix it, re-solve the rest),
+// under a quadratic distortion energy with the chart planes as hard equalities.
+//
+// The energy is the Dirichlet energy of the displacement from a reference polycube (the one the
+// deformation produced, in lattice units), measured on the rest tets (the input):
+// E(x) = sum_t V_t |grad x - J_t|^2, with gradients on the rest tet and J_t the reference's
+// Jacobian there. The reference itself has E = 0, so the energy measures only what the rounding
+// changes. The rest metric matters: the polycube's own tets are often slivers, and the FEM
+// Laplacian on them breaks the maximum principle badly (a plane moved by 0.3 dragged an interior
+// vertex by 1.7 and inverted a tet on Data/torus.obj); on the input's quality tets the
+// displacement interpolates the plane moves. It is separable per axis today, and a cut
+// transition u_plus = Pi u_minus + t (later) couples the axes only through the elimination of
+// the plus-side coordinates, with t as three more integer variables.
+//
+// The planes are eliminated once: the free coordinates are factored (one sparse LDL^T), and the
+// energy is reduced to a dense quadratic in the plane values (a Schur complement), so each greedy
+// step is a small dense solve. Pairs of planes that bound a chart or a tet stay ordered and one
+// unit apart (an active set in the continuous re-solve, longest paths for the integer choice).
+// The linear re-solve does not keep every sliver of a real polycube positive, so the result is
+// untangled (a local pattern search, then a penalised L-BFGS over all free coordinates) and
+// checked; a volume check per candidate is the fallback.
+#pragma once
+
+#include "MeshTypes.h"
+#include "Status.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace polycubehex
+{
+
+/// The charts of a polycube and the plane variables they lie on.
+struct ChartPlanes
+{
+  /// #T by 4: the tet across local face k (vtkTetra face order), or -1 on the boundary.
+  Tets Neighbors;
+  /// #T by 4: the chart of local face k of tet t, or -1 for an interior face.
+  Tets FaceChart;
+  /// #C: the label 0..5 (+X, -X, +Y, -Y, +Z, -Z) shared by the faces of each chart. A chart is a
+  /// maximal set of boundary faces with one label connected through boundary edges.
+  std::vector<int> ChartLabel;
+  /// #C: the plane variable each chart lies on. Charts of one axis that share a vertex lie on the
+  /// same plane (that vertex has one coordinate), so several charts may share a plane.
+  std::vector<int> ChartPlane;
+  /// #P: the axis 0, 1, 2 (x, y, z) of each plane.
+  std::vector<int> PlaneAxis;
+  /// #V by 3: the plane that coordinate a of vertex v equals, or -1 when that coordinate is free.
+  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> VertexPlane;
+  /// Pairs (lower, upper) of planes of one axis that must not meet: the planes a tet spans, and
+  /// for each chart C the neighbours it leaves towards +b (lower bounds of its extent along b)
+  /// paired with those it leaves towards -b (upper bounds), e.g. both sides of a slab seen from
+  /// its rim, or the two steps a riser joins. Rounding keeps each pair in its order and at least
+  /// one unit apart when they were apart, so that no chart and no layer of tets collapses.
+  std::vector<std::array<int, 2>> PlanePairs;
+  /// #C: the charts adjacent to each chart through a boundary edge, sorted.
+  std::vector<std::vector<int>> ChartNeighbors;
+};
+
+/// Finds the charts and their plane variables.
+/// @param positions   #V by 3 polycube positions (any scale): they order the plane pairs and tell
+///                    on which side of a neighbour a chart lies
+/// @param cells       #T by 4 tets
+/// @param faceLabels  #T by 4: label 0..5 of local face k when it lies on the boundary, -1
+///                    otherwise (PolycubeLabels in the data contract)
+/// @return Failure when a boundary face has no label, an interior face has one, a label is out
+///         of range, an index is out of range, or a face is shared by more than two tets.
+Status ComputeChartPlanes(const Points& positions,
+  const Tets& cells,
+  const Tets& faceLabels,
+  ChartPlanes& charts);
+
+/// The distortion energy of a polycube with its chart planes as hard equalities, reduced to the
+/// plane values. Build it once per reference; Solve maps plane values to vertex positions.
+class PolycubePlaneSolver
+{
+public:
+  PolycubePlaneSolver();
+  ~PolycubePlaneSolver();
+  PolycubePlaneSolver(const PolycubePlaneSolver&) = delete;
+  PolycubePlaneSolver& operator=(const PolycubePlaneSolver&) = delete;
+
+  /// @param rest       #V by 3 positions the energy is measured on (the input, any scale);
+  ///                   positive tets
+  /// @param reference  #V by 3 reference positions (the polycube to stay close to); positive
+  ///                   tets
+  /// @param cells      #T by 4 tets
+  /// @param charts     from ComputeChartPlanes on the same tets
+  /// @return Failure when a tet is not positive in either or when the free coordinates are not
+  ///         pinned by any plane (a component without charts of some axis).
+  Status Build(const Points& rest,
+    const Points& reference,
+    const Tets& cells,
+    const ChartPlanes& charts);
+
+  /// #P: the mean reference coordinate of the vertices of each plane (where the reference
+  /// polycube puts it; exact when the charts are flat).
+  const Eigen::VectorXd& ReferencePlanes() const { return this->RefPlanes; }
+
+  /// The energy as a function of the planes alone: E(P) = P^T H P - 2 g^T P + c (the free
+  /// coordinates at their optimum). H is #P by #P, symmetric positive semi-definite (a
+  /// translation of all planes of one axis costs nothing).
+  const Eigen::MatrixXd& PlaneHessian() const { return this->H; }
+  const Eigen::VectorXd& PlaneGradient() const { return this->G; }
+
+  /// Positions for given plane values: coordinates on a plane equal its value exactly, the free
+  /// ones minimise the energy.
+  /// @param planes     #P plane values
+  /// @param positions  #V by 3 output
+  void Solve(const Eigen::VectorXd& planes, Points& positions) const;
+
+  /// The distortion energy sum_t V_t |grad x - J_t|^2 of `positions` (0 at the reference).
+  double Energy(const Points& positions) const;
+
+  /// Raises the volume ratio of tets below `target` by moving the free coordinates of their
+  /// vertices (a pattern search per vertex on the smallest ratio of its tets, a few sweeps);
+  /// plane coordinates never move. The linear solve keeps the energy low but not every sliver
+  /// of the polycube positive: a plane moved by 0.3 flips a tet of relative thickness 0.04.
+  /// @return the smallest volume ratio afterwards
+  double Untangle(Points& positions, double target) const;
+
+  /// Raises the volume ratio of every tet towards `target` by minimising, over all the free
+  /// coordinates at once (L-BFGS), the distortion energy plus a penalty on the tets below the
+  /// target, escalated until every tet is above half the target or three weights were tried.
+  /// For the slivers the local search cannot free.
+  /// @return the smallest volume ratio afterwards
+  double UntangleGlobally(Points& positions, double target) const;
+
+  /// Smallest ratio of a tet's signed volume in `positions` to its volume in the reference.
+  double MinVolumeRatio(const Points& positions) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> Data;
+  Eigen::VectorXd RefPlanes;
+  Eigen::MatrixXd H;
+  Eigen::VectorXd G;
+};
+
+/// Settings of roundPolycubePlanes.
+struct IntegerRoundingParameters
+{
+  /// Integers tried for each plane, nearest first, before giving up (default 4, >= 1).
+  int CandidateCount = 4;
+  /// A candidate is refused when some tet's volume shrinks below this fraction of its reference
+  /// volume (default 1e-4, in (0, 1)): a collapsed chart flattens the tets next to it.
+  double MinimumVolumeRatio = 1e-4;
+  /// Two planes of a pair closer than this (lattice units) count as one level and need not
+  /// stay apart (default 1e-6).
+  double SeparationTolerance = 1e-6;
+  /// After each re-solve, tets whose volume ratio is below this are untangled (default 0.05,
+  /// in [0, 1); 0 turns it off).
+  double UntangleTarget = 0.05;
+};
+
+/// What roundPolycubePlanes produced.
+struct IntegerRoundingResult
+{
+  Points Positions;             ///< #V by 3 positions, every chart on an integer plane
+  Eigen::VectorXd PlanesBefore; ///< #P plane values of the reference
+  Eigen::VectorXd PlanesAfter;  ///< #P integer plane values
+  int FallbackCount = 0;        ///< planes rounded to another integer than their nearest
+  double MaxPlaneShift = 0.0;   ///< max |after - before| (lattice units)
+  double MinVolumeRatio = 0.0;  ///< smallest tet volume ratio after rounding
+  double Energy = 0.0;          ///< distortion energy of the rounded polycube
+  /// False when rounding with the separations alone, then re-solving and untangling, kept every
+  /// tet positive; true when the careful path (a volume check per candidate) was needed.
+  bool CarefulPath = false;
+};
+
+/// Rounds every chart plane of `reference` to an integer greedily and re-solves the vertices.
+/// Fast path: greedy rounding under the separations alone, one re-solve, then untangling (local,
+/// then global if needed). If a tet stays below MinimumVolumeRatio, the careful path rounds
+/// again with a re-solve and a local untangling per candidate, and untangles the result.
+/// @param rest       #V by 3 input positions (any scale), positive tets: the energy's metric
+/// @param reference  #V by 3 polycube positions in lattice units (one unit = one hex edge),
+///                   positive tets
+/// @param cells      #T by 4 tets
+/// @param charts     from ComputeChartPlanes
+/// @return Failure (naming the chart) when no candidate integer keeps every tet positive and
+///         every plane pair apart; the message suggests a finer resolution.
+Status roundPolycubePlanes(const Points& rest,
+  const Points& reference,
+  const Tets& cells,
+  const ChartPlanes& charts,
+  const IntegerRoundingParameters& params,
+  IntegerRoundingResult& result,
+  const Progress& progress = {});
+
+} // namespace polycubehex

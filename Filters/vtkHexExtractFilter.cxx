@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkHexExtractFilter.h"
+
+#include "HexExtraction.h"
+#include "PolycubeHexArrayNames.h"
+#include "PolycubeHexConversion.h"
+#include "vtkHexMeshQuality.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkHexExtractFilter);
+
+namespace
+{
+namespace names = polycubehex::ArrayNames;
+
+/// Reads the deform filter's output into the core's input, or says what is missing.
+bool ToPolycubeTetMesh(vtkUnstructuredGrid* input, polycubehex::PolycubeTetMesh& mesh,
+  std::string& why)
+{
+  polycubehex::TetMesh tets;
+  if (!polycubehex::ToTetMesh(input, tets, why))
+  {
+    return false;
+  }
+  vtkDataArray* original = input->GetPointData()->GetArray(names::OriginalPoints);
+  vtkDataArray* labels = input->GetCellData()->GetArray(names::PolycubeLabels);
+  if (!original || original->GetNumberOfComponents() != 3)
+  {
+    why = std::string("the input has no 3-component point array '") + names::OriginalPoints +
+      "': connect the output of the Polycube Deform filter";
+    return false;
+  }
+  if (!labels || labels->GetNumberOfComponents() != 4)
+  {
+    why = std::string("the input has no 4-component cell array '") + names::PolycubeLabels +
+      "': connect the output of the Polycube Deform filter";
+    return false;
+  }
+  mesh.PolycubeVertices = tets.Vertices;
+  mesh.Cells = tets.Cells;
+  mesh.OriginalVertices.resize(tets.Vertices.rows(), 3);
+  for (Eigen::Index v = 0; v < tets.Vertices.rows(); ++v)
+  {
+    original->GetTuple(v, mesh.OriginalVertices.data() + 3 * v);
+  }
+  if (!mesh.OriginalVertices.allFinite() || !mesh.PolycubeVertices.allFinite())
+  {
+    why = "the input has non-finite point coordinates";
+    return false;
+  }
+  mesh.FaceLabels.resize(tets.Cells.rows(), 4);
+  for (Eigen::Index t = 0; t < tets.Cells.rows(); ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      mesh.FaceLabels(t, k) = static_cast<int>(labels->GetComponent(t, k));
+    }
+  }
+  return true;
+}
+
+/// The input tets at their original positions: the reference surface for distances.
+vtkSmartPointer<vtkUnstructuredGrid> OriginalTets(const polycubehex::PolycubeTetMesh& mesh)
+{
+  polycubehex::TetMesh tets;
+  tets.Vertices = mesh.OriginalVertices;
+  tets.Cells = mesh.Cells;
+  return polycubehex::ToUnstructuredGrid(tets);
+}
+
+template <typename ArrayType, typename Value>
+void AddFieldValue(vtkFieldData* fields, const char* name, Value value)
+{
+  vtkNew<ArrayType> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fields->AddArray(array);
+}
+} // namespace
+
+vtkHexExtractFilter::vtkHexExtractFilter()
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+int vtkHexExtractFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  return 1;
+}
+
+int vtkHexExtractFilter::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkPolyData");
+  return 1;
+}
+
+int vtkHexExtractFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // 1. Get the input and outputs.
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* hexOutput = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkPolyData* quadOutput = vtkPolyData::GetData(outputVector, 1);
+
+  // 2. Check and convert it.
+  polycubehex::PolycubeTetMesh mesh;
+  std::string why;
+  if (!ToPolycubeTetMesh(input, mesh, why))
+  {
+    vtkErrorMacro(<< "Cannot extract hexes: " << why);
+    return 0;
+  }
+
+  // 3. Call the core; progress to 80%, the quality measures take the rest.
+  polycubehex::HexExtractionParameters params;
+  params.TargetHexCount = this->TargetHexCount;
+  params.TargetEdgeLength = this->TargetEdgeLength;
+  params.Padding = this->Padding;
+  params.Smoothing = this->Smoothing;
+  params.SmoothingIterations = this->SmoothingIterations;
+  params.RoundingCandidates = this->RoundingCandidates;
+  auto progress = [this](double fraction) {
+    this->UpdateProgress(0.8 * fraction);
+    return !this->CheckAbort();
+  };
+  polycubehex::HexExtractionResult result;
+  const polycubehex::Status status = polycubehex::extractHexMesh(mesh, params, result, progress);
+  if (!status)
+  {
+    vtkErrorMacro(<< "Hex extraction failed: " << status.Message());
+    return 0;
+  }
+
+  // 4. Attach the outputs: quality through vtkMeshQuality, distances to the input boundary.
+  auto hexes = polycubehex::ToUnstructuredGrid(result.Mesh);
+  vtkSmartPointer<vtkUnstructuredGrid> reference;
+  if (this->ComputeDistances)
+  {
+    reference = OriginalTets(mesh);
+  }
+  if (!vtkHexMeshQuality::ComputeQuality(
+        hexes, reference, hexOutput, why, this->NumberOfDistanceSamples, 0))
+  {
+    vtkErrorMacro(<< "Quality of the extracted hexes: " << why);
+    return 0;
+  }
+  vtkFieldData* fields = hexOutput->GetFieldData();
+  for (int a = 0; a < input->GetFieldData()->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = input->GetFieldData()->GetAbstractArray(a);
+    if (array && array->GetName() && !fields->HasArray(array->GetName()))
+    {
+      fields->AddArray(array);
+    }
+  }
+  AddFieldValue<vtkIntArray>(fields, "PaddingHexCount", result.PaddingHexCount);
+  AddFieldValue<vtkDoubleArray>(fields, "LatticeScale", result.LatticeScale);
+  AddFieldValue<vtkDoubleArray>(
+    fields, "ScaledJacobianMinBeforeSmoothing", result.ScaledJacobianMinBeforeSmoothing);
+  AddFieldValue<vtkDoubleArray>(
+    fields, "ScaledJacobianMeanBeforeSmoothing", result.ScaledJacobianMeanBeforeSmoothing);
+  AddFieldValue<vtkDoubleArray>(fields, "ExtractionSeconds",
+    result.RoundingSeconds + result.ExtractionSeconds + result.PaddingSeconds +
+      result.SmoothingSeconds);
+
+  quadOutput->SetPoints(hexOutput->GetPoints());
+  vtkNew<vtkCellArray> quads;
+  vtkNew<vtkIntArray> quadLabels;
+  quadLabels->SetName(names::PolycubeLabel);
+  for (Eigen::Index q = 0; q < result.BoundaryQuads.rows(); ++q)
+  {
+    const vtkIdType ids[4] = { result.BoundaryQuads(q, 0), result.BoundaryQuads(q, 1),
+      result.BoundaryQuads(q, 2), result.BoundaryQuads(q, 3) };
+    quads->InsertNextCell(4, ids);
+    quadLabels->InsertNextValue(
+      q < static_cast<Eigen::Index>(result.BoundaryQuadLabels.size()) ? result.BoundaryQuadLabels[q]
+                                                                       : -1);
+  }
+  quadOutput->SetPolys(quads);
+  quadOutput->GetCellData()->AddArray(quadLabels);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetHexCount: " << this->TargetHexCount << "\n";
+  os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << "\n";
+  os << indent << "Padding: " << this->Padding << "\n";
+  os << indent << "Smoothing: " << this->Smoothing << "\n";
+  os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "RoundingCandidates: " << this->RoundingCandidates << "\n";
+  os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
+  os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";
+}
