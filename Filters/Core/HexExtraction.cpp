@@ -146,6 +146,9 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   // Each labelled face must face its label's direction in the polycube, and its area counts
   // towards the padding layer's share of the hex budget.
   double polycubeArea = 0.0;
+  const Eigen::RowVector3d polycubeExtent =
+    input.PolycubeVertices.colwise().maxCoeff() - input.PolycubeVertices.colwise().minCoeff();
+  const double degenerateArea = 1e-12 * polycubeExtent.squaredNorm();
   int against = 0;
   int firstAgainst = -1;
   for (int t = 0; t < cells.rows(); ++t)
@@ -163,6 +166,12 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       const Eigen::Vector3d normal = (b - a).cross(c - a);
       polycubeArea += 0.5 * normal.norm();
       const double along = (label % 2 == 0 ? 1.0 : -1.0) * normal[label / 2];
+      // A face flattened to (numerically) zero area has no direction to check; it contributes
+      // no lattice point of its own, so it cannot mislead the extraction.
+      if (normal.norm() <= degenerateArea)
+      {
+        continue;
+      }
       if (!(along > 0.5 * normal.norm()))
       {
         firstAgainst = against == 0 ? t : firstAgainst;

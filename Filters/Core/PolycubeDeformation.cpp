@@ -1,0 +1,795 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "PolycubeDeformation.h"
+
+#include "PolycubeCharts.h"
+#include "PolycubeEnergy.h"
+#include "PolycubeNewton.h"
+#include "PolycubeRotation.h"
+#include "TetEdgeSplit.h"
+#include "TetGeometry.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace polycubehex
+{
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// The mesh being deformed, with everything that must follow a split.
+struct WorkMesh
+{
+  Tets Cells;
+  Points Rest;     ///< normalised input positions (ARAP rest shape)
+  Points Original; ///< input positions, input units
+  Points X;        ///< deformed positions, normalised
+  std::vector<int> OriginalPointId;
+  std::vector<int> ParentTet;
+  /// For each vertex created by a split (id - first new id): its parents, 2 (edge midpoint) or 4
+  /// (tet centroid) ids.
+  std::vector<std::vector<int>> SplitParents;
+  int InputVertexCount = 0;
+
+  int VertexCount() const { return static_cast<int>(this->Rest.rows()); }
+};
+
+void SplitEdges(WorkMesh& mesh, const std::vector<std::array<int, 2>>& edges)
+{
+  const int n = mesh.VertexCount();
+  std::vector<int> parentLocal;
+  std::vector<std::array<int, 2>> parents;
+  SplitTetEdges(n, mesh.Cells, edges, parentLocal, parents);
+  std::vector<int> composed(parentLocal.size());
+  for (size_t t = 0; t < parentLocal.size(); ++t)
+  {
+    composed[t] = mesh.ParentTet[static_cast<size_t>(parentLocal[t])];
+  }
+  mesh.ParentTet = composed;
+  AppendSplitMidpoints(mesh.Rest, parents);
+  AppendSplitMidpoints(mesh.Original, parents);
+  AppendSplitMidpoints(mesh.X, parents);
+  mesh.OriginalPointId.resize(static_cast<size_t>(mesh.VertexCount()), -1);
+  for (const auto& p : parents)
+  {
+    mesh.SplitParents.push_back({ p[0], p[1] });
+  }
+}
+
+void SplitTets(WorkMesh& mesh, const std::vector<int>& tets)
+{
+  std::vector<std::array<int, 4>> corners;
+  SplitTetsAtCentroid(mesh.VertexCount(), mesh.Cells, tets, mesh.ParentTet, corners);
+  AppendSplitCentroids(mesh.Rest, corners);
+  AppendSplitCentroids(mesh.Original, corners);
+  AppendSplitCentroids(mesh.X, corners);
+  mesh.OriginalPointId.resize(static_cast<size_t>(mesh.VertexCount()), -1);
+  for (const auto& c : corners)
+  {
+    mesh.SplitParents.push_back({ c[0], c[1], c[2], c[3] });
+  }
+}
+
+struct TripleHash
+{
+  size_t operator()(const std::array<int, 3>& k) const
+  {
+    size_t h = static_cast<size_t>(k[0]);
+    h = h * 1000003u ^ static_cast<size_t>(k[1]);
+    h = h * 1000003u ^ static_cast<size_t>(k[2]);
+    return h;
+  }
+};
+
+std::array<int, 3> SortedFace(const Triangles& faces, Eigen::Index f)
+{
+  std::array<int, 3> key = { faces(f, 0), faces(f, 1), faces(f, 2) };
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+/// Carries per-boundary-face values across splits: a new boundary face lies inside an old one,
+/// found by replacing each split vertex by its parent that the face does not hold (the latest
+/// split first). Faces that do not map get -1.
+std::vector<int> TransferFaceValues(const Triangles& oldFaces,
+  const std::vector<int>& oldValues,
+  int oldVertexCount,
+  const Triangles& newFaces,
+  const WorkMesh& mesh)
+{
+  std::unordered_map<std::array<int, 3>, int, TripleHash> lookup;
+  for (Eigen::Index f = 0; f < oldFaces.rows(); ++f)
+  {
+    lookup.emplace(SortedFace(oldFaces, f), oldValues[static_cast<size_t>(f)]);
+  }
+  const int firstSplit = mesh.VertexCount() - static_cast<int>(mesh.SplitParents.size());
+  std::vector<int> values(static_cast<size_t>(newFaces.rows()), -1);
+  for (Eigen::Index f = 0; f < newFaces.rows(); ++f)
+  {
+    std::array<int, 3> face = { newFaces(f, 0), newFaces(f, 1), newFaces(f, 2) };
+    bool ok = true;
+    while (ok)
+    {
+      const int m = *std::max_element(face.begin(), face.end());
+      if (m < oldVertexCount)
+      {
+        break;
+      }
+      const std::vector<int>& parents = mesh.SplitParents[static_cast<size_t>(m - firstSplit)];
+      ok = parents.size() == 2;
+      if (!ok)
+      {
+        break;
+      }
+      const bool hasFirst = std::find(face.begin(), face.end(), parents[0]) != face.end();
+      const bool hasSecond = std::find(face.begin(), face.end(), parents[1]) != face.end();
+      ok = hasFirst != hasSecond;
+      std::replace(face.begin(), face.end(), m, hasFirst ? parents[1] : parents[0]);
+    }
+    if (!ok)
+    {
+      continue;
+    }
+    std::sort(face.begin(), face.end());
+    const auto it = lookup.find(face);
+    if (it != lookup.end())
+    {
+      values[static_cast<size_t>(f)] = it->second;
+    }
+  }
+  return values;
+}
+
+Eigen::VectorXd Flat(const Points& x)
+{
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), x.size());
+}
+
+Points Unflat(const Eigen::VectorXd& x)
+{
+  return Eigen::Map<const Points>(x.data(), x.size() / 3, 3);
+}
+
+std::set<std::array<int, 2>> BoundaryEdgeSet(const Triangles& faces)
+{
+  std::set<std::array<int, 2>> edges;
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const int a = faces(f, e);
+      const int b = faces(f, (e + 1) % 3);
+      edges.insert({ std::min(a, b), std::max(a, b) });
+    }
+  }
+  return edges;
+}
+
+/// Charts touching each vertex (sorted, unique).
+std::vector<std::vector<int>> VertexCharts(int vertexCount,
+  const Triangles& faces,
+  const std::vector<int>& faceChart)
+{
+  std::vector<std::vector<int>> charts(static_cast<size_t>(vertexCount));
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      charts[static_cast<size_t>(faces(f, c))].push_back(faceChart[static_cast<size_t>(f)]);
+    }
+  }
+  for (auto& list : charts)
+  {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return charts;
+}
+
+bool ShareOne(const std::vector<int>& a, const std::vector<int>& b)
+{
+  auto i = a.begin();
+  auto j = b.begin();
+  while (i != a.end() && j != b.end())
+  {
+    if (*i == *j)
+    {
+      return true;
+    }
+    *i < *j ? ++i : ++j;
+  }
+  return false;
+}
+
+int FindRoot(std::vector<int>& parent, int i)
+{
+  while (parent[static_cast<size_t>(i)] != i)
+  {
+    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
+    i = parent[static_cast<size_t>(i)];
+  }
+  return i;
+}
+
+Status CheckInput(const TetMesh& input)
+{
+  const Eigen::Index n = input.Vertices.rows();
+  const Eigen::Index t = input.Cells.rows();
+  if (n == 0 || t == 0)
+  {
+    std::ostringstream message;
+    message << "ComputePolycube: the input mesh is empty (" << n << " vertices, " << t << " tets)";
+    return Status::Failure(message.str());
+  }
+  if (!input.Vertices.allFinite())
+  {
+    return Status::Failure("ComputePolycube: the input has a non-finite vertex coordinate");
+  }
+  for (Eigen::Index i = 0; i < t; ++i)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      if (input.Cells(i, c) < 0 || input.Cells(i, c) >= n)
+      {
+        std::ostringstream message;
+        message << "ComputePolycube: tet " << i << " refers to vertex " << input.Cells(i, c)
+                << ", outside [0, " << n << ")";
+        return Status::Failure(message.str());
+      }
+    }
+  }
+  return Status::Success();
+}
+
+} // namespace
+
+Status ComputePolycube(const TetMesh& input,
+  const PolycubeParameters& params,
+  PolycubeResult& out,
+  const Progress& progress)
+{
+  const auto totalStart = Clock::now();
+  out = PolycubeResult();
+  Status status = CheckInput(input);
+  if (!status)
+  {
+    return status;
+  }
+
+  // Normalised working copy (DESIGN.md "Scale").
+  const UnitDiagonalFrame frame = ComputeUnitDiagonalFrame(input.Vertices);
+  WorkMesh mesh;
+  mesh.Cells = input.Cells;
+  mesh.Rest = ToUnitDiagonal(frame, input.Vertices);
+  mesh.Original = input.Vertices;
+  mesh.InputVertexCount = static_cast<int>(input.Vertices.rows());
+  mesh.OriginalPointId.resize(static_cast<size_t>(mesh.InputVertexCount));
+  std::iota(mesh.OriginalPointId.begin(), mesh.OriginalPointId.end(), 0);
+  mesh.ParentTet.resize(static_cast<size_t>(input.Cells.rows()));
+  std::iota(mesh.ParentTet.begin(), mesh.ParentTet.end(), 0);
+  for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+  {
+    const double volume = TetSignedVolume(mesh.Rest, mesh.Cells, static_cast<int>(t));
+    if (!(volume > 0.0))
+    {
+      std::ostringstream message;
+      message << "ComputePolycube: tet " << t << " has non-positive volume ("
+              << volume * frame.Scale * frame.Scale * frame.Scale
+              << "); the input tets must be positively oriented (VTK node order)";
+      return Status::Failure(message.str());
+    }
+  }
+  TetTopology topology;
+  ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+  if (topology.NonManifoldFaceCount > 0)
+  {
+    std::ostringstream message;
+    message << "ComputePolycube: " << topology.NonManifoldFaceCount
+            << " faces are shared by more than two tets";
+    return Status::Failure(message.str());
+  }
+  mesh.X = mesh.Rest;
+
+  // Interior edges with both ends on the boundary would be forced flat.
+  if (params.PresplitBoundaryEdges)
+  {
+    const auto boundaryEdges = BoundaryEdgeSet(topology.BoundaryFaces);
+    std::vector<std::array<int, 2>> edges;
+    for (const auto& e : topology.Edges)
+    {
+      if (topology.IsBoundaryVertex[static_cast<size_t>(e[0])] &&
+        topology.IsBoundaryVertex[static_cast<size_t>(e[1])] && boundaryEdges.count(e) == 0)
+      {
+        edges.push_back(e);
+      }
+    }
+    if (!edges.empty())
+    {
+      SplitEdges(mesh, edges);
+      ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+    }
+    out.PresplitEdgeCount = static_cast<int>(edges.size());
+  }
+
+  // Initial rotation.
+  const auto rotationStart = Clock::now();
+  if (params.AlignInitialRotation)
+  {
+    out.InitialRotation = ComputeAxisAligningRotation(mesh.Rest, topology.BoundaryFaces);
+    mesh.X = mesh.Rest * out.InitialRotation.transpose();
+  }
+  out.RotationSeconds = SecondsSince(rotationStart);
+  if (!ReportProgress(progress, 0.02))
+  {
+    return Status::Failure("ComputePolycube: aborted");
+  }
+
+  // Continuation on the l1 alignment weight, eq. (9)-(13).
+  const auto optimizationStart = Clock::now();
+  const NewtonSettings::LinearSolverType solverType =
+    params.LinearSolver == PolycubeParameters::LinearSolverType::Direct
+    ? NewtonSettings::LinearSolverType::Direct
+    : NewtonSettings::LinearSolverType::BlockPcg;
+  double finalBarrier = params.BarrierWeight;
+  {
+    PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
+    const VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+    PolycubeNewtonSolver solver(energy, reduction);
+    Eigen::VectorXd x = Flat(mesh.X);
+    double weight = params.AlignmentWeight;
+    double eps = params.AlignmentEpsilon;
+    const int rounds = std::max(1, params.MaxRounds);
+    // An input that is already a polycube (within the tolerance) is left as it is.
+    PolycubeEnergyTerms initial;
+    energy.Evaluate(x.data(), initial);
+    out.Residual = initial.Residual;
+    out.Converged = initial.Residual < params.ResidualTolerance;
+    for (int round = 0; round < rounds && !out.Converged; ++round)
+    {
+      PolycubeEnergyWeights weights;
+      weights.Alignment = weight;
+      weights.AlignmentEpsilon = eps;
+      weights.NormalDifference = params.NormalDifferenceWeight;
+      weights.Area = params.AreaWeight;
+      weights.Barrier = params.BarrierWeight * std::max(1.0, weight);
+      weights.BarrierThreshold = params.BarrierThreshold;
+      finalBarrier = weights.Barrier;
+      energy.SetWeights(weights);
+      NewtonSettings settings;
+      settings.LinearSolver = solverType;
+      settings.MaxIterations = params.IterationsPerRound;
+      NewtonStats stats;
+      const double base = 0.02 + 0.78 * round / rounds;
+      status = solver.Minimize(x,
+        settings,
+        stats,
+        [&](double f) { return ReportProgress(progress, base + 0.78 * f / rounds); });
+      if (!status)
+      {
+        return Status::Failure("ComputePolycube: " + status.Message());
+      }
+      out.Iterations += stats.Iterations;
+      out.Rounds = round + 1;
+      out.Residual = stats.Terms.Residual;
+      if (out.Residual < params.ResidualTolerance)
+      {
+        out.Converged = true;
+        break;
+      }
+      weight *= params.AlignmentWeightGrowth;
+      eps = std::max(params.MinAlignmentEpsilon, eps * params.AlignmentEpsilonDecay);
+    }
+    mesh.X = Unflat(x);
+  }
+  out.OptimizationSeconds = SecondsSince(optimizationStart);
+  if (!out.Converged)
+  {
+    std::ostringstream message;
+    message << "the polycube residual is " << out.Residual << " after " << out.Rounds
+            << " rounds, above the tolerance " << params.ResidualTolerance;
+    out.Warnings.push_back(message.str());
+  }
+
+  // Labels and charts, then the splits that flattening needs.
+  const auto labelStart = Clock::now();
+  Triangles adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+  std::vector<int> labels = PolycubeFaceLabels(mesh.X, topology.BoundaryFaces);
+  PolycubeChartCleanup cleanup;
+  cleanup.MinAreaFraction = params.MinChartAreaFraction;
+  cleanup.MinFaceCount = params.MinChartFaceCount;
+  out.RelabelledFaceCount =
+    CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
+  PolycubeCharts charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+  for (int pass = 0; pass < 4; ++pass)
+  {
+    // An interior edge with both ends in one chart would lie in the chart's plane; a boundary
+    // edge inside one chart whose ends also share a second chart would lie on the line where
+    // the two planes meet, and its faces would be degenerate.
+    const auto vertexCharts =
+      VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+    const auto boundaryEdges = BoundaryEdgeSet(topology.BoundaryFaces);
+    std::vector<std::array<int, 2>> edges;
+    for (const auto& e : topology.Edges)
+    {
+      if (boundaryEdges.count(e) == 0 &&
+        ShareOne(vertexCharts[static_cast<size_t>(e[0])], vertexCharts[static_cast<size_t>(e[1])]))
+      {
+        edges.push_back(e);
+      }
+    }
+    for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        const Eigen::Index g = adjacency(f, e);
+        if (g <= f ||
+          charts.FaceChart[static_cast<size_t>(f)] != charts.FaceChart[static_cast<size_t>(g)])
+        {
+          continue;
+        }
+        const int a = topology.BoundaryFaces(f, e);
+        const int b = topology.BoundaryFaces(f, (e + 1) % 3);
+        const auto& ca = vertexCharts[static_cast<size_t>(a)];
+        const auto& cb = vertexCharts[static_cast<size_t>(b)];
+        std::vector<int> common;
+        std::set_intersection(
+          ca.begin(), ca.end(), cb.begin(), cb.end(), std::back_inserter(common));
+        if (common.size() >= 2)
+        {
+          edges.push_back({ std::min(a, b), std::max(a, b) });
+        }
+      }
+    }
+    if (edges.empty())
+    {
+      break;
+    }
+    const Triangles oldFaces = topology.BoundaryFaces;
+    const int oldCount = mesh.VertexCount();
+    SplitEdges(mesh, edges);
+    ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+    labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
+    adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+    out.SplitEdgeCount += static_cast<int>(edges.size());
+  }
+  {
+    // A tet whose four corners are in one chart (all its edges on the boundary, e.g. two
+    // boundary faces in one chart across a boundary edge): split at its centroid.
+    adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+    const auto vertexCharts =
+      VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+    std::vector<int> tets;
+    for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+    {
+      std::vector<int> common = vertexCharts[static_cast<size_t>(mesh.Cells(t, 0))];
+      for (int c = 1; c < 4 && !common.empty(); ++c)
+      {
+        const auto& other = vertexCharts[static_cast<size_t>(mesh.Cells(t, c))];
+        std::vector<int> next;
+        std::set_intersection(
+          common.begin(), common.end(), other.begin(), other.end(), std::back_inserter(next));
+        common.swap(next);
+      }
+      if (!common.empty())
+      {
+        tets.push_back(static_cast<int>(t));
+      }
+    }
+    if (!tets.empty())
+    {
+      const Triangles oldFaces = topology.BoundaryFaces;
+      const int oldCount = mesh.VertexCount();
+      SplitTets(mesh, tets);
+      ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+      labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
+    }
+    out.SplitTetCount = static_cast<int>(tets.size());
+  }
+  for (int& label : labels)
+  {
+    if (label < 0)
+    {
+      label = 0; // cannot happen for a manifold boundary; keep the output well formed
+      out.Warnings.push_back("a boundary face lost its label in a split");
+    }
+  }
+  adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+  charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+  out.LabelingSeconds = SecondsSince(labelStart);
+  if (!ReportProgress(progress, 0.82))
+  {
+    return Status::Failure("ComputePolycube: aborted");
+  }
+
+  // Chart planes: charts of one axis that share a vertex must share the plane.
+  const int chartCount = charts.Count();
+  std::vector<int> group(static_cast<size_t>(chartCount));
+  std::iota(group.begin(), group.end(), 0);
+  const auto vertexCharts =
+    VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+  for (const auto& list : vertexCharts)
+  {
+    for (size_t i = 0; i < list.size(); ++i)
+    {
+      for (size_t j = i + 1; j < list.size(); ++j)
+      {
+        const int a = list[i];
+        const int b = list[j];
+        if (charts.ChartLabel[static_cast<size_t>(a)] / 2 ==
+          charts.ChartLabel[static_cast<size_t>(b)] / 2)
+        {
+          group[static_cast<size_t>(FindRoot(group, a))] = FindRoot(group, b);
+        }
+      }
+    }
+  }
+  std::vector<double> planeSum(static_cast<size_t>(chartCount), 0.0);
+  std::vector<double> planeWeight(static_cast<size_t>(chartCount), 0.0);
+  for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+  {
+    const int chart = charts.FaceChart[static_cast<size_t>(f)];
+    const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
+    const int root = FindRoot(group, chart);
+    const Eigen::Vector3d p0 = mesh.X.row(topology.BoundaryFaces(f, 0)).transpose();
+    const Eigen::Vector3d p1 = mesh.X.row(topology.BoundaryFaces(f, 1)).transpose();
+    const Eigen::Vector3d p2 = mesh.X.row(topology.BoundaryFaces(f, 2)).transpose();
+    const double area = 0.5 * (p1 - p0).cross(p2 - p0).norm() + 1e-300;
+    planeSum[static_cast<size_t>(root)] += area * (p0(axis) + p1(axis) + p2(axis)) / 3.0;
+    planeWeight[static_cast<size_t>(root)] += area;
+  }
+  std::vector<double> plane(static_cast<size_t>(chartCount));
+  for (int c = 0; c < chartCount; ++c)
+  {
+    const int root = FindRoot(group, c);
+    plane[static_cast<size_t>(c)] =
+      planeSum[static_cast<size_t>(root)] / planeWeight[static_cast<size_t>(root)];
+  }
+  std::map<int, double> anchors; // coordinate 3v+a -> plane
+  for (int v = 0; v < mesh.VertexCount(); ++v)
+  {
+    for (int chart : vertexCharts[static_cast<size_t>(v)])
+    {
+      const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
+      anchors[3 * v + axis] = plane[static_cast<size_t>(chart)];
+    }
+  }
+  std::vector<int> anchorIndex;
+  std::vector<double> anchorTarget;
+  for (const auto& entry : anchors)
+  {
+    anchorIndex.push_back(entry.first);
+    anchorTarget.push_back(entry.second);
+  }
+
+  // Flattening: pull the chart coordinates onto their planes with a growing penalty (the line
+  // search keeps every tet positive), then make them exact and relax the rest by ARAP.
+  const auto flattenStart = Clock::now();
+  if (params.Flatten)
+  {
+    PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
+    energy.SetAnchors(anchorIndex, anchorTarget);
+    PolycubeEnergyWeights weights;
+    weights.Barrier = finalBarrier;
+    weights.BarrierThreshold = params.BarrierThreshold;
+    Eigen::VectorXd x = Flat(mesh.X);
+    // Faces that are not folded over their label's direction must not fold while flattening.
+    std::vector<int> guarded(labels);
+    energy.SetFaceLabels(guarded);
+    int unguarded = 0;
+    for (size_t f = 0; f < guarded.size(); ++f)
+    {
+      if (!(energy.FaceOrientation(x.data(), static_cast<int>(f)) > 0.0))
+      {
+        guarded[f] = -1;
+        ++unguarded;
+      }
+    }
+    energy.SetFaceLabels(guarded);
+    weights.FaceBarrier = finalBarrier;
+    weights.FaceBarrierThreshold = params.BarrierThreshold;
+    {
+      const VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+      PolycubeNewtonSolver solver(energy, reduction);
+      double anchorWeight = 1e3 * std::max(1.0, finalBarrier);
+      for (int round = 0; round < params.FlattenRounds; ++round, anchorWeight *= 10.0)
+      {
+        weights.Anchor = anchorWeight;
+        energy.SetWeights(weights);
+        NewtonSettings settings;
+        settings.LinearSolver = solverType;
+        settings.MaxIterations = params.FlattenIterations;
+        settings.StepTolerance = 1e-12;
+        NewtonStats stats;
+        status = solver.Minimize(x, settings, stats);
+        if (!status)
+        {
+          return Status::Failure("ComputePolycube: " + status.Message());
+        }
+        out.Iterations += stats.Iterations;
+        if (!ReportProgress(progress, 0.82 + 0.15 * (round + 1) / params.FlattenRounds))
+        {
+          return Status::Failure("ComputePolycube: aborted");
+        }
+        if (stats.Terms.MaxAnchorDeviation < 1e-10)
+        {
+          break;
+        }
+      }
+    }
+    // Make the planes exact. Where that would invert a tet or fold a chart face (a labelling the
+    // connectivity cannot realise), the vertices of the offending elements keep their penalised
+    // positions instead: every tet stays positive and the few released coordinates stay within
+    // the penalty's tolerance of their planes.
+    std::vector<std::vector<int>> vertexAnchors(static_cast<size_t>(mesh.VertexCount()));
+    for (size_t i = 0; i < anchorIndex.size(); ++i)
+    {
+      vertexAnchors[static_cast<size_t>(anchorIndex[i] / 3)].push_back(static_cast<int>(i));
+    }
+    std::vector<bool> released(anchorIndex.size(), false);
+    Eigen::VectorXd snapped = x;
+    for (size_t i = 0; i < anchorIndex.size(); ++i)
+    {
+      snapped(anchorIndex[i]) = anchorTarget[i];
+    }
+    auto release = [&](int v)
+    {
+      for (int i : vertexAnchors[static_cast<size_t>(v)])
+      {
+        released[static_cast<size_t>(i)] = true;
+        snapped(anchorIndex[static_cast<size_t>(i)]) = x(anchorIndex[static_cast<size_t>(i)]);
+      }
+    };
+    for (int attempt = 0; attempt < 50 && !energy.IsFeasible(snapped.data()); ++attempt)
+    {
+      const Points current = Unflat(snapped);
+      for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+      {
+        if (!(TetSignedVolume(current, mesh.Cells, static_cast<int>(t)) > 0.0))
+        {
+          for (int k = 0; k < 4; ++k)
+          {
+            release(mesh.Cells(t, k));
+          }
+        }
+      }
+      for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+      {
+        if (guarded[static_cast<size_t>(f)] >= 0 &&
+          !(energy.FaceOrientation(snapped.data(), static_cast<int>(f)) > 0.0))
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            release(topology.BoundaryFaces(f, k));
+          }
+        }
+      }
+    }
+    std::vector<int> fixedIndex, freeIndex;
+    std::vector<double> fixedTarget, freeTarget;
+    std::vector<bool> unflattened(static_cast<size_t>(mesh.VertexCount()), false);
+    for (size_t i = 0; i < anchorIndex.size(); ++i)
+    {
+      if (released[i])
+      {
+        freeIndex.push_back(anchorIndex[i]);
+        freeTarget.push_back(anchorTarget[i]);
+        unflattened[static_cast<size_t>(anchorIndex[i] / 3)] = true;
+      }
+      else
+      {
+        fixedIndex.push_back(anchorIndex[i]);
+        fixedTarget.push_back(anchorTarget[i]);
+      }
+    }
+    out.UnflattenedVertexCount =
+      static_cast<int>(std::count(unflattened.begin(), unflattened.end(), true));
+    if (!energy.IsFeasible(snapped.data()))
+    {
+      snapped = x; // cannot happen: releasing everything gives back the penalised positions
+      out.Warnings.push_back("the charts could not be snapped onto their planes");
+    }
+    else
+    {
+      if (out.UnflattenedVertexCount > 0)
+      {
+        std::ostringstream message;
+        message << out.UnflattenedVertexCount
+                << " vertices stay off their chart planes (within the flattening penalty's "
+                   "tolerance): snapping them would invert a tet or fold a chart face";
+        out.Warnings.push_back(message.str());
+      }
+      // ARAP relaxation with the exact planes hard (variables eliminated), the released
+      // coordinates still held by the penalty.
+      energy.SetAnchors(freeIndex, freeTarget);
+      energy.SetWeights(weights);
+      const VariableReduction reduction =
+        VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget);
+      PolycubeNewtonSolver solver(energy, reduction);
+      NewtonSettings settings;
+      settings.LinearSolver = solverType;
+      settings.MaxIterations = params.FlattenIterations;
+      NewtonStats stats;
+      status = solver.Minimize(snapped, settings, stats);
+      if (!status)
+      {
+        return Status::Failure("ComputePolycube: " + status.Message());
+      }
+      out.Iterations += stats.Iterations;
+    }
+    mesh.X = Unflat(snapped);
+  }
+  out.FlatteningSeconds = SecondsSince(flattenStart);
+
+  // Results in input units.
+  out.Positions = FromUnitDiagonal(frame, mesh.X);
+  out.Cells = mesh.Cells;
+  out.OriginalPointId = mesh.OriginalPointId;
+  out.OriginalPoints = mesh.Original;
+  out.OriginalCellId = mesh.ParentTet;
+  out.BoundaryFaces = topology.BoundaryFaces;
+  out.BoundaryFaceTet = topology.BoundaryFaceTet;
+  out.BoundaryFaceLabel = labels;
+  out.ChartId = charts.FaceChart;
+  out.ChartCount = chartCount;
+  out.ChartPlane.resize(static_cast<size_t>(chartCount));
+  for (int c = 0; c < chartCount; ++c)
+  {
+    const int axis = charts.ChartLabel[static_cast<size_t>(c)] / 2;
+    out.ChartPlane[static_cast<size_t>(c)] =
+      plane[static_cast<size_t>(c)] * frame.Scale + frame.Center(axis);
+  }
+  out.FaceLabels.setConstant(mesh.Cells.rows(), 4, -1);
+  for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+  {
+    out.FaceLabels(topology.BoundaryFaceTet[static_cast<size_t>(f)],
+      topology.BoundaryFaceLocal[static_cast<size_t>(f)]) = labels[static_cast<size_t>(f)];
+  }
+  out.CornerCount =
+    CountPolycubeCorners(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+  out.InvertedTetCount = 0;
+  out.MinVolumeRatio = std::numeric_limits<double>::infinity();
+  for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+  {
+    const double volume = TetSignedVolume(out.Positions, mesh.Cells, static_cast<int>(t));
+    if (!(volume > 0.0))
+    {
+      ++out.InvertedTetCount;
+    }
+    const double rest = TetSignedVolume(mesh.Rest, mesh.Cells, static_cast<int>(t)) * frame.Scale *
+      frame.Scale * frame.Scale;
+    out.MinVolumeRatio = std::min(out.MinVolumeRatio, volume / rest);
+  }
+  out.MaxPlaneDeviation = 0.0;
+  for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+  {
+    const int chart = charts.FaceChart[static_cast<size_t>(f)];
+    const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
+    for (int c = 0; c < 3; ++c)
+    {
+      out.MaxPlaneDeviation = std::max(out.MaxPlaneDeviation,
+        std::abs(out.Positions(topology.BoundaryFaces(f, c), axis) -
+          out.ChartPlane[static_cast<size_t>(chart)]));
+    }
+  }
+  out.TotalSeconds = SecondsSince(totalStart);
+  ReportProgress(progress, 1.0);
+  return Status::Success();
+}
+
+} // namespace polycubehex

@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The l1-based polycube deformation of Huang et al. 2014 as used by Fang et al. 2016 (§4.2,
+// eq. 9-13), `Uniform` guidance: no frame field and no cuts. A tet mesh of any genus is deformed
+// until its boundary normals are axis-aligned, its boundary is split into charts labelled
+// +X,-X,+Y,-Y,+Z,-Z, and each chart is flattened onto its plane with every tet positive.
+//
+// Pipeline: normalise (unit diagonal) -> split interior edges joining two boundary vertices ->
+// optional l1-optimal rotation -> continuation of damped Newton solves (PolycubeNewton.h) on
+// E_arap + w_align E_align + w_diff E_diff + w_area E_area + barrier (PolycubeEnergy.h) ->
+// labels, chart clean-up (PolycubeCharts.h) -> splits of the edges and tets the charts would force
+// flat -> flattening: a growing penalty towards the chart planes, then the planes hard (their
+// coordinates eliminated from the unknowns) and an ARAP relaxation -> back to input units.
+#pragma once
+
+#include "MeshTypes.h"
+#include "Status.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace polycubehex
+{
+
+/// Settings of ComputePolycube. Lengths and areas are relative to the input's bounding-box
+/// diagonal (DESIGN.md "Scale"). The defaults were measured on Data/rockerarm.mesh (30.8k tets,
+/// genus 1): 12 rounds, residual 8.6e-4, 39 charts, 70 corners (the paper's l1 baseline: 88),
+/// no inverted tet, about 20 s on 2 shared cores.
+struct PolycubeParameters
+{
+  /// Rotate the model first by the rotation minimising the area-weighted l1 norm of its normals
+  /// (PolycubeRotation.h; of the 24 equivalent ones, the closest to the identity). The polycube
+  /// is then axis-aligned in the rotated frame (InitialRotation in the result).
+  bool AlignInitialRotation = true;
+
+  /// Before optimising, split every interior edge whose two ends are on the boundary: such an
+  /// edge (and a tet with two boundary faces) is forced flat as soon as its ends reach one chart
+  /// plane, and the line search would then stall against it.
+  bool PresplitBoundaryEdges = true;
+
+  /// Continuation (after the public code of Huang et al.'s group): round k minimises
+  /// E_arap + w_k E_align + w_diff E_diff + w_area E_area + w_barrier,k E_barrier with
+  /// w_k = AlignmentWeight * AlignmentWeightGrowth^k and the l1 smoothing
+  /// eps_k = max(MinAlignmentEpsilon, AlignmentEpsilon * AlignmentEpsilonDecay^k), until the
+  /// polycube residual is below ResidualTolerance. Starting at 0.05 as the public code does only
+  /// adds two rounds that barely move the shape on rockerarm.
+  double AlignmentWeight = 0.2;
+  double AlignmentWeightGrowth = 2.0;
+  double AlignmentEpsilon = 0.1;
+  double AlignmentEpsilonDecay = 0.7;
+  double MinAlignmentEpsilon = 0.01;
+  int MaxRounds = 30;
+  /// Newton iterations per round (fewer when the steps become negligible).
+  int IterationsPerRound = 5;
+  /// DESIGN.md §4: below this the deformation counts as converged.
+  double ResidualTolerance = 1e-3;
+
+  /// w_diff of eq. (12): smoothness of the normals along boundary edges (fewer small charts). On
+  /// rockerarm: 0 gives 74 charts and 137 corners, 0.3 gives 54 and 100, 1 gives 39 and 70, at
+  /// about the same cost.
+  double NormalDifferenceWeight = 1.0;
+  /// Penalty weight on (A / A_rest - 1)^2, A the boundary area (eq. 9's area constraint; the
+  /// alignment term is normalised by the current area, so it has no incentive to shrink).
+  double AreaWeight = 1.0;
+  /// Inversion barrier weight, multiplied by max(1, w_k) in round k (PolycubeEnergy.h).
+  double BarrierWeight = 1.0;
+  /// Volume ratio (deformed / rest) below which the barrier acts.
+  double BarrierThreshold = 0.1;
+
+  /// Chart clean-up: charts below this fraction of the boundary area, or with fewer faces than
+  /// MinChartFaceCount, are merged into a neighbour when they are thin along its axis (see
+  /// PolycubeChartCleanup).
+  double MinChartAreaFraction = 2e-4;
+  int MinChartFaceCount = 3;
+
+  /// Flatten each chart exactly onto its plane (otherwise stop after labelling).
+  bool Flatten = true;
+  /// Flattening: anchor penalty rounds (weight x10 each, from 1e3 times the final barrier
+  /// weight) before the planes become hard.
+  int FlattenRounds = 8;
+  /// Flattening: Newton iterations per anchor round and for the final hard-constrained solve.
+  int FlattenIterations = 5;
+
+  /// Linear solver of the Newton steps.
+  enum class LinearSolverType
+  {
+    /// CG preconditioned by a Cholesky factorisation of the per-axis blocks of the Newton matrix
+    /// (three scalar-sized systems, factorised once per round). Rockerarm: about 1.6 s per round.
+    BlockPcg,
+    /// Sparse LDL^T of the coupled 3#V system, every iteration. Rockerarm: about 7 s per round.
+    Direct
+  };
+  LinearSolverType LinearSolver = LinearSolverType::BlockPcg;
+};
+
+/// Output of ComputePolycube, on the mesh after the splits.
+struct PolycubeResult
+{
+  Points Positions; ///< #V' by 3 polycube positions, in input units
+  Tets Cells;       ///< #T' by 4 tets (positive in Positions when InvertedTetCount is 0)
+  std::vector<int> OriginalPointId; ///< #V': input vertex, or -1 for a vertex made by a split
+  Points OriginalPoints;            ///< #V' by 3: input position (interpolated for split vertices)
+  std::vector<int> OriginalCellId;  ///< #T': the input tet each tet comes from
+  /// #T' by 4: label 0..5 (+X,-X,+Y,-Y,+Z,-Z) of local face k when it is on the boundary,
+  /// -1 otherwise. Local faces follow vtkTetra (TetGeometry.h).
+  Tets FaceLabels;
+  Triangles BoundaryFaces;            ///< #F by 3 boundary triangles, oriented outwards
+  std::vector<int> BoundaryFaceTet;   ///< #F owning tet
+  std::vector<int> BoundaryFaceLabel; ///< #F label 0..5
+  std::vector<int> ChartId;           ///< #F chart id
+  std::vector<double> ChartPlane;     ///< per chart: its coordinate along its axis, input units
+  int ChartCount = 0;
+  int CornerCount = 0;            ///< vertices where three or more charts meet
+  int InvertedTetCount = 0;       ///< tets with non-positive volume in Positions
+  double MinVolumeRatio = 0.0;    ///< smallest deformed / rest volume over the tets
+  double Residual = 0.0;          ///< polycube residual before flattening (DESIGN.md §4)
+  bool Converged = false;         ///< Residual < ResidualTolerance
+  double MaxPlaneDeviation = 0.0; ///< largest distance of a chart vertex to its plane, input units
+  /// Vertices left off their chart planes because snapping them would invert a tet or fold a
+  /// chart face (a labelling the connectivity cannot realise); 0 means every chart is exact.
+  int UnflattenedVertexCount = 0;
+  Eigen::Matrix3d InitialRotation = Eigen::Matrix3d::Identity(); ///< applied before deforming
+  int Rounds = 0;     ///< continuation rounds (0: the input was already a polycube)
+  int Iterations = 0; ///< Newton iterations, all phases
+  int PresplitEdgeCount = 0;
+  int SplitEdgeCount = 0;      ///< edges split after labelling
+  int SplitTetCount = 0;       ///< tets split at their centroid after labelling
+  int RelabelledFaceCount = 0; ///< faces relabelled by the chart clean-up
+  double RotationSeconds = 0.0;
+  double OptimizationSeconds = 0.0;
+  double LabelingSeconds = 0.0; ///< labels, clean-up and splits
+  double FlatteningSeconds = 0.0;
+  double TotalSeconds = 0.0;
+  std::vector<std::string> Warnings;
+};
+
+/// Deforms `input` into a polycube.
+/// @param input     #V by 3 vertices and #T by 4 positively oriented tets (VTK order)
+/// @param params    settings
+/// @param out       the result; valid only on success
+/// @param progress  fraction done, return false to abort
+/// Fails on an empty mesh, an index out of range, a non-finite coordinate, a non-positive tet,
+/// a face shared by more than two tets, or an abort.
+Status ComputePolycube(const TetMesh& input,
+  const PolycubeParameters& params,
+  PolycubeResult& out,
+  const Progress& progress = {});
+
+} // namespace polycubehex

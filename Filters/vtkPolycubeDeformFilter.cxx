@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkPolycubeDeformFilter.h"
+
+#include "PolycubeDeformation.h"
+#include "PolycubeHexArrayNames.h"
+#include "PolycubeHexConversion.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+
+vtkStandardNewMacro(vtkPolycubeDeformFilter);
+
+namespace
+{
+namespace names = polycubehex::ArrayNames;
+
+template <typename ArrayType, typename Value>
+void SetFieldValue(vtkFieldData* fields, const char* name, Value value)
+{
+  vtkNew<ArrayType> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fields->AddArray(array);
+}
+
+vtkSmartPointer<vtkIntArray> IntArray(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+} // namespace
+
+vtkPolycubeDeformFilter::vtkPolycubeDeformFilter()
+{
+  this->SetNumberOfOutputPorts(2);
+  // The core owns the defaults (chosen by measurement there); the header and XML repeat them.
+  const polycubehex::PolycubeParameters defaults;
+  this->AlignInitialRotation = defaults.AlignInitialRotation;
+  this->AlignmentWeight = defaults.AlignmentWeight;
+  this->AlignmentWeightGrowth = defaults.AlignmentWeightGrowth;
+  this->AlignmentEpsilon = defaults.AlignmentEpsilon;
+  this->MinAlignmentEpsilon = defaults.MinAlignmentEpsilon;
+  this->MaxRounds = defaults.MaxRounds;
+  this->ResidualTolerance = defaults.ResidualTolerance;
+  this->NormalDifferenceWeight = defaults.NormalDifferenceWeight;
+  this->MinChartAreaFraction = defaults.MinChartAreaFraction;
+  this->Flatten = defaults.Flatten;
+}
+
+int vtkPolycubeDeformFilter::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkPolyData");
+  return 1;
+}
+
+int vtkPolycubeDeformFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // 1. Get the input and outputs.
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
+
+  // 2. Check it.
+  if (this->Guidance == FRAME_FIELD)
+  {
+    vtkErrorMacro(<< "Guidance FrameField (the closed-form polycube) is not available yet; "
+                     "use Uniform (the l1-polycube baseline) or Automatic.");
+    return 0;
+  }
+  polycubehex::TetMesh mesh;
+  std::string why;
+  if (!polycubehex::ToTetMesh(input, mesh, why))
+  {
+    vtkErrorMacro(<< "Cannot deform the input into a polycube: " << why);
+    return 0;
+  }
+
+  // 3. Call the core.
+  polycubehex::PolycubeParameters params;
+  params.AlignInitialRotation = this->AlignInitialRotation;
+  params.AlignmentWeight = this->AlignmentWeight;
+  params.AlignmentWeightGrowth = this->AlignmentWeightGrowth;
+  params.AlignmentEpsilon = this->AlignmentEpsilon;
+  params.MinAlignmentEpsilon = this->MinAlignmentEpsilon;
+  params.MaxRounds = this->MaxRounds;
+  params.ResidualTolerance = this->ResidualTolerance;
+  params.NormalDifferenceWeight = this->NormalDifferenceWeight;
+  params.MinChartAreaFraction = this->MinChartAreaFraction;
+  params.Flatten = this->Flatten;
+  auto progress = [this](double fraction) {
+    this->UpdateProgress(fraction);
+    return !this->CheckAbort();
+  };
+  polycubehex::PolycubeResult result;
+  const polycubehex::Status status = polycubehex::ComputePolycube(mesh, params, result, progress);
+  if (!status)
+  {
+    vtkErrorMacro(<< "Polycube deformation failed: " << status.Message());
+    return 0;
+  }
+  for (const std::string& warning : result.Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  if (!result.Converged)
+  {
+    vtkWarningMacro(<< "The polycube residual " << result.Residual << " is above the tolerance "
+                    << this->ResidualTolerance << " after " << result.Rounds
+                    << " rounds; the charts were flattened anyway.");
+  }
+
+  // 4. Attach the outputs: the cut mesh at polycube positions, then its boundary surface.
+  polycubehex::TetMesh deformed;
+  deformed.Vertices = result.Positions;
+  deformed.Cells = result.Cells;
+  output->ShallowCopy(polycubehex::ToUnstructuredGrid(deformed));
+
+  const vtkIdType pointCount = result.Positions.rows();
+  vtkNew<vtkIdTypeArray> originalPointId;
+  originalPointId->SetName(names::OriginalPointId);
+  originalPointId->SetNumberOfTuples(pointCount);
+  vtkNew<vtkDoubleArray> originalPoints;
+  originalPoints->SetName(names::OriginalPoints);
+  originalPoints->SetNumberOfComponents(3);
+  originalPoints->SetNumberOfTuples(pointCount);
+  for (vtkIdType v = 0; v < pointCount; ++v)
+  {
+    originalPointId->SetValue(v, result.OriginalPointId[v]);
+    originalPoints->SetTuple(v, result.OriginalPoints.data() + 3 * v);
+  }
+  output->GetPointData()->AddArray(originalPointId);
+  output->GetPointData()->AddArray(originalPoints);
+
+  // Cell data of the input follows each tet's parent (DESIGN.md: split tets copy it).
+  const vtkIdType cellCount = result.Cells.rows();
+  vtkCellData* inputCells = input->GetCellData();
+  vtkCellData* outputCells = output->GetCellData();
+  outputCells->CopyAllocate(inputCells, cellCount);
+  vtkNew<vtkIdTypeArray> originalCellId;
+  originalCellId->SetName(names::OriginalCellId);
+  originalCellId->SetNumberOfTuples(cellCount);
+  auto labels = IntArray(names::PolycubeLabels, 4, cellCount);
+  for (vtkIdType t = 0; t < cellCount; ++t)
+  {
+    outputCells->CopyData(inputCells, result.OriginalCellId[t], t);
+    originalCellId->SetValue(t, result.OriginalCellId[t]);
+    for (int k = 0; k < 4; ++k)
+    {
+      labels->SetComponent(t, k, result.FaceLabels(t, k));
+    }
+  }
+  if (!outputCells->HasArray(names::OriginalCellId))
+  {
+    outputCells->AddArray(originalCellId);
+  }
+  outputCells->AddArray(labels);
+
+  vtkFieldData* fields = output->GetFieldData();
+  fields->ShallowCopy(input->GetFieldData());
+  SetFieldValue<vtkIntArray>(fields, names::CornerCount, result.CornerCount);
+  SetFieldValue<vtkIntArray>(fields, names::InvertedTetCount, result.InvertedTetCount);
+  SetFieldValue<vtkDoubleArray>(fields, names::PolycubeResidual, result.Residual);
+  SetFieldValue<vtkStringArray>(fields, names::Guidance, std::string("Uniform"));
+  SetFieldValue<vtkIntArray>(fields, "ChartCount", result.ChartCount);
+  SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
+  vtkNew<vtkDoubleArray> translations; // no cuts in uniform guidance: zero tuples
+  translations->SetName(names::CutTranslations);
+  translations->SetNumberOfComponents(3);
+  fields->AddArray(translations);
+
+  surface->SetPoints(output->GetPoints());
+  vtkNew<vtkCellArray> triangles;
+  const vtkIdType faceCount = result.BoundaryFaces.rows();
+  auto faceLabel = IntArray(names::PolycubeLabel, 1, faceCount);
+  auto chartId = IntArray(names::ChartId, 1, faceCount);
+  for (vtkIdType f = 0; f < faceCount; ++f)
+  {
+    const vtkIdType ids[3] = { result.BoundaryFaces(f, 0), result.BoundaryFaces(f, 1),
+      result.BoundaryFaces(f, 2) };
+    triangles->InsertNextCell(3, ids);
+    faceLabel->SetValue(f, result.BoundaryFaceLabel[f]);
+    chartId->SetValue(f, result.ChartId[f]);
+  }
+  surface->SetPolys(triangles);
+  surface->GetCellData()->AddArray(faceLabel);
+  surface->GetCellData()->AddArray(chartId);
+  return 1;
+}
+
+void vtkPolycubeDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Guidance: " << this->Guidance << "\n";
+  os << indent << "AlignInitialRotation: " << this->AlignInitialRotation << "\n";
+  os << indent << "AlignmentWeight: " << this->AlignmentWeight << "\n";
+  os << indent << "AlignmentWeightGrowth: " << this->AlignmentWeightGrowth << "\n";
+  os << indent << "AlignmentEpsilon: " << this->AlignmentEpsilon << "\n";
+  os << indent << "MinAlignmentEpsilon: " << this->MinAlignmentEpsilon << "\n";
+  os << indent << "MaxRounds: " << this->MaxRounds << "\n";
+  os << indent << "ResidualTolerance: " << this->ResidualTolerance << "\n";
+  os << indent << "NormalDifferenceWeight: " << this->NormalDifferenceWeight << "\n";
+  os << indent << "MinChartAreaFraction: " << this->MinChartAreaFraction << "\n";
+  os << indent << "Flatten: " << this->Flatten << "\n";
+}

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Times ComputePolycube (uniform guidance) on a MEDIT tet mesh and prints the measures of
+// DESIGN.md §4: wall seconds per phase (median of the runs), polycube residual, corners,
+// inverted tets. Not run by CTest.
+//
+//   BenchPolycube [mesh.mesh = Data/rockerarm.mesh] [runs = 3] [output.mesh]
+//
+// With an output path, the polycube of the last run is written as MEDIT (tets and boundary
+// triangles).
+#include "MeditFormat.h"
+#include "PolycubeDeformation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace polycubehex;
+
+namespace
+{
+double Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  return values.empty() ? 0.0 : values[values.size() / 2];
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string path = argc > 1 ? argv[1] : "Data/rockerarm.mesh";
+  const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
+  MeditMesh medit;
+  const Status read = ReadMeditFile(path, medit);
+  if (!read)
+  {
+    std::fprintf(stderr, "%s\n", read.Message().c_str());
+    return 1;
+  }
+  TetMesh mesh;
+  mesh.Vertices = medit.Vertices;
+  mesh.Cells = medit.TetCells;
+  std::printf("%s: %ld vertices, %ld tets\n",
+    path.c_str(),
+    static_cast<long>(mesh.Vertices.rows()),
+    static_cast<long>(mesh.Cells.rows()));
+
+  PolycubeParameters params;
+  PolycubeResult result;
+  std::vector<double> total, rotation, optimization, labeling, flattening;
+  for (int run = 0; run < runs; ++run)
+  {
+    const Status status = ComputePolycube(mesh, params, result);
+    if (!status)
+    {
+      std::fprintf(stderr, "%s\n", status.Message().c_str());
+      return 1;
+    }
+    total.push_back(result.TotalSeconds);
+    rotation.push_back(result.RotationSeconds);
+    optimization.push_back(result.OptimizationSeconds);
+    labeling.push_back(result.LabelingSeconds);
+    flattening.push_back(result.FlatteningSeconds);
+    std::printf("run %d: %.2f s\n", run + 1, result.TotalSeconds);
+  }
+  std::printf("time (median of %d): total %.2f s = rotation %.2f + optimization %.2f + labels and "
+              "splits %.2f + flattening %.2f\n",
+    runs,
+    Median(total),
+    Median(rotation),
+    Median(optimization),
+    Median(labeling),
+    Median(flattening));
+  std::printf("rounds %d, Newton iterations %d, residual before flattening %.3g (%s)\n",
+    result.Rounds,
+    result.Iterations,
+    result.Residual,
+    result.Converged ? "converged" : "NOT converged");
+  std::printf("charts %d, corners %d, inverted tets %d, min volume ratio %.3g\n",
+    result.ChartCount,
+    result.CornerCount,
+    result.InvertedTetCount,
+    result.MinVolumeRatio);
+  std::printf("splits: %d edges before, %d edges + %d tets after labelling; output %ld vertices, "
+              "%ld tets\n",
+    result.PresplitEdgeCount,
+    result.SplitEdgeCount,
+    result.SplitTetCount,
+    static_cast<long>(result.Positions.rows()),
+    static_cast<long>(result.Cells.rows()));
+  std::printf("vertices off their chart plane %d, max plane deviation %.3g (input units)\n",
+    result.UnflattenedVertexCount,
+    result.MaxPlaneDeviation);
+  for (const auto& warning : result.Warnings)
+  {
+    std::printf("warning: %s\n", warning.c_str());
+  }
+
+  if (argc > 3)
+  {
+    MeditMesh out;
+    out.Vertices = result.Positions;
+    out.TetCells = result.Cells;
+    out.TriangleCells = result.BoundaryFaces;
+    const Status written = WriteMeditFile(argv[3], out);
+    if (!written)
+    {
+      std::fprintf(stderr, "%s\n", written.Message().c_str());
+      return 1;
+    }
+  }
+  return 0;
+}
