@@ -62,5 +62,10 @@ again = simple.OpenDataFile(output)
 again.UpdatePipeline()
 assert again.GetDataInformation().GetNumberOfCells() == 30813
 
+# The Python package imports in pvpython too, next to the plugin.
+import polycubehex  # noqa: E402
+
+assert hasattr(polycubehex, "vtkHexExtractFilter") and hasattr(polycubehex, "vtkMeditReader")
+
 print("TestPVPlugin: ok (%d proxies)" % len(proxies))
 sys.exit(0)
