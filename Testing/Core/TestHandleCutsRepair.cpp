@@ -9,6 +9,7 @@
 #include "CutRepair.h"
 #include "CutSurface.h"
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 #include "TetGeometry.h"
 #include "TopologyAdjacency.h"
 #include "TopologyHomology.h"
@@ -24,146 +25,10 @@
 #include <vector>
 
 using polycubehex::TetMesh;
+using polycubehex_test::SweptTorus;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
-/// Rings `first`..`last` of a polar disk of radius r (ring j: 6j points at radius r j / last;
-/// ring 0 is the centre). Returns 2D points and triangles.
-void PolarDisk(int first,
-  int last,
-  double r,
-  std::vector<Eigen::Vector2d>& points,
-  std::vector<std::array<int, 3>>& triangles)
-{
-  std::vector<int> ringStart;
-  for (int j = first; j <= last; ++j)
-  {
-    ringStart.push_back(static_cast<int>(points.size()));
-    const int count = j == 0 ? 1 : 6 * j;
-    for (int k = 0; k < count; ++k)
-    {
-      const double angle = 2.0 * Pi * k / count;
-      points.emplace_back(r * j / last * std::cos(angle), r * j / last * std::sin(angle));
-    }
-  }
-  for (int j = first + 1; j <= last; ++j)
-  {
-    const int inner = ringStart[j - 1 - first];
-    const int outer = ringStart[j - first];
-    const int m = j - 1 == 0 ? 1 : 6 * (j - 1);
-    const int n = 6 * j;
-    if (m == 1)
-    {
-      for (int k = 0; k < n; ++k)
-      {
-        triangles.push_back({ inner, outer + k, outer + (k + 1) % n });
-      }
-      continue;
-    }
-    int a = 0;
-    int b = 0;
-    while (a < m || b < n)
-    {
-      // Advance on the ring whose next point comes first in angle.
-      if (b < n && (a == m || static_cast<double>(b + 1) / n <= static_cast<double>(a + 1) / m))
-      {
-        triangles.push_back({ inner + a % m, outer + b, outer + (b + 1) % n });
-        ++b;
-      }
-      else
-      {
-        triangles.push_back({ inner + a % m, outer + b % n, inner + (a + 1) % m });
-        ++a;
-      }
-    }
-  }
-}
-
-/// Appends the 3 tets of the prism (a0 a1 a2, b0 b1 b2); each quad is split along the diagonal
-/// from its smallest vertex id, which makes neighbouring prisms conforming.
-void SplitPrism(const std::array<int, 3>& a,
-  const std::array<int, 3>& b,
-  std::vector<std::array<int, 4>>& tets)
-{
-  std::array<int, 3> bottom = a;
-  std::array<int, 3> top = b;
-  // Rotate and mirror so that bottom[0] is the smallest of the six ids.
-  int best = 0;
-  for (int i = 1; i < 6; ++i)
-  {
-    const int id = i < 3 ? a[i] : b[i - 3];
-    const int bestId = best < 3 ? a[best] : b[best - 3];
-    if (id < bestId)
-    {
-      best = i;
-    }
-  }
-  if (best >= 3)
-  {
-    std::swap(bottom, top);
-    best -= 3;
-  }
-  std::rotate(bottom.begin(), bottom.begin() + best, bottom.end());
-  std::rotate(top.begin(), top.begin() + best, top.end());
-  tets.push_back({ bottom[0], top[0], top[1], top[2] });
-  // The quad (bottom1, bottom2, top2, top1): diagonal from its smallest id.
-  const int smallest = std::min({ bottom[1], bottom[2], top[1], top[2] });
-  if (smallest == bottom[1] || smallest == top[2])
-  {
-    tets.push_back({ bottom[0], bottom[1], bottom[2], top[2] });
-    tets.push_back({ bottom[0], bottom[1], top[2], top[1] });
-  }
-  else
-  {
-    tets.push_back({ bottom[0], bottom[1], bottom[2], top[1] });
-    tets.push_back({ bottom[0], bottom[2], top[2], top[1] });
-  }
-}
-
-/// A polar disk (or annulus, rings first..last) of radius r swept around the z axis at
-/// distance R in `stations` steps: a solid torus (first = 0) or a hollow torus (first > 0).
-TetMesh SweptTorus(double R, double r, int first, int last, int stations)
-{
-  std::vector<Eigen::Vector2d> disk;
-  std::vector<std::array<int, 3>> triangles;
-  PolarDisk(first, last, r, disk, triangles);
-  const int p = static_cast<int>(disk.size());
-  TetMesh mesh;
-  mesh.Vertices.resize(static_cast<Eigen::Index>(p) * stations, 3);
-  for (int s = 0; s < stations; ++s)
-  {
-    const double phi = 2.0 * Pi * s / stations;
-    for (int i = 0; i < p; ++i)
-    {
-      mesh.Vertices.row(s * p + i) << (R + disk[i].x()) * std::cos(phi),
-        (R + disk[i].x()) * std::sin(phi), disk[i].y();
-    }
-  }
-  std::vector<std::array<int, 4>> tets;
-  for (int s = 0; s < stations; ++s)
-  {
-    const int next = (s + 1) % stations;
-    for (const auto& t : triangles)
-    {
-      SplitPrism({ s * p + t[0], s * p + t[1], s * p + t[2] },
-        { next * p + t[0], next * p + t[1], next * p + t[2] },
-        tets);
-    }
-  }
-  mesh.Cells.resize(static_cast<Eigen::Index>(tets.size()), 4);
-  for (size_t t = 0; t < tets.size(); ++t)
-  {
-    mesh.Cells.row(t) << tets[t][0], tets[t][1], tets[t][2], tets[t][3];
-    if (polycubehex::TetSignedVolume(mesh.Vertices, mesh.Cells, static_cast<int>(t)) < 0.0)
-    {
-      std::swap(mesh.Cells(t, 0), mesh.Cells(t, 1));
-    }
-  }
-  return mesh;
-}
-
 /// True when `difference` (one value per interior face) is a coboundary: integrating it along
 /// the dual graph gives a consistent function on tets.
 bool IsCoboundary(const polycubehex::TetAdjacency& adjacency, const std::vector<int>& difference)

@@ -4,6 +4,7 @@
 // message that names the problem and the offending edge or vertex.
 #include "SurfaceCheck.h"
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 
 #include <Eigen/Geometry>
 
@@ -17,202 +18,16 @@
 
 using polycubehex::SurfaceCheckReport;
 using polycubehex::SurfaceMesh;
+using polycubehex_test::Contains;
+using polycubehex_test::GlueTets;
+using polycubehex_test::Icosphere;
+using polycubehex_test::Merge;
+using polycubehex_test::Pi;
+using polycubehex_test::PolyhedronVolume;
+using polycubehex_test::Torus;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
-/// Icosahedron subdivided `levels` times and projected on a sphere; outward unless `inward`.
-SurfaceMesh Icosphere(int levels, double radius, const Eigen::Vector3d& centre, bool inward = false)
-{
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> points = { { -1, t, 0 },
-    { 1, t, 0 },
-    { -1, -t, 0 },
-    { 1, -t, 0 },
-    { 0, -1, t },
-    { 0, 1, t },
-    { 0, -1, -t },
-    { 0, 1, -t },
-    { t, 0, -1 },
-    { t, 0, 1 },
-    { -t, 0, -1 },
-    { -t, 0, 1 } };
-  std::vector<std::array<int, 3>> faces = { { 0, 11, 5 },
-    { 0, 5, 1 },
-    { 0, 1, 7 },
-    { 0, 7, 10 },
-    { 0, 10, 11 },
-    { 1, 5, 9 },
-    { 5, 11, 4 },
-    { 11, 10, 2 },
-    { 10, 7, 6 },
-    { 7, 1, 8 },
-    { 3, 9, 4 },
-    { 3, 4, 2 },
-    { 3, 2, 6 },
-    { 3, 6, 8 },
-    { 3, 8, 9 },
-    { 4, 9, 5 },
-    { 2, 4, 11 },
-    { 6, 2, 10 },
-    { 8, 6, 7 },
-    { 9, 8, 1 } };
-  for (int level = 0; level < levels; ++level)
-  {
-    std::map<std::pair<int, int>, int> midpoints;
-    auto midpoint = [&](int a, int b)
-    {
-      const auto key = std::minmax(a, b);
-      const auto found = midpoints.find(key);
-      if (found != midpoints.end())
-      {
-        return found->second;
-      }
-      points.push_back(0.5 * (points[a] + points[b]));
-      midpoints[key] = static_cast<int>(points.size()) - 1;
-      return static_cast<int>(points.size()) - 1;
-    };
-    std::vector<std::array<int, 3>> finer;
-    for (const auto& f : faces)
-    {
-      const int ab = midpoint(f[0], f[1]);
-      const int bc = midpoint(f[1], f[2]);
-      const int ca = midpoint(f[2], f[0]);
-      finer.push_back({ f[0], ab, ca });
-      finer.push_back({ f[1], bc, ab });
-      finer.push_back({ f[2], ca, bc });
-      finer.push_back({ ab, bc, ca });
-    }
-    faces.swap(finer);
-  }
-  SurfaceMesh mesh;
-  mesh.Vertices.resize(points.size(), 3);
-  for (std::size_t v = 0; v < points.size(); ++v)
-  {
-    mesh.Vertices.row(v) = (centre + radius * points[v].normalized()).transpose();
-  }
-  mesh.Faces.resize(faces.size(), 3);
-  for (std::size_t f = 0; f < faces.size(); ++f)
-  {
-    // Convex around the centre: orient each face by its normal against its centroid.
-    const Eigen::Vector3d p0 = points[faces[f][0]];
-    const Eigen::Vector3d n = (points[faces[f][1]] - p0).cross(points[faces[f][2]] - p0);
-    const bool outward = n.dot(p0 + points[faces[f][1]] + points[faces[f][2]]) > 0.0;
-    if (outward == inward)
-    {
-      std::swap(faces[f][1], faces[f][2]);
-    }
-    mesh.Faces.row(f) << faces[f][0], faces[f][1], faces[f][2];
-  }
-  return mesh;
-}
-
-/// A torus of radii R > r around the z axis, n by m quads split into triangles, outward.
-SurfaceMesh Torus(double R, double r, int n, int m)
-{
-  SurfaceMesh mesh;
-  mesh.Vertices.resize(n * m, 3);
-  mesh.Faces.resize(2 * n * m, 3);
-  for (int i = 0; i < n; ++i)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      const double u = 2.0 * Pi * i / n;
-      const double v = 2.0 * Pi * j / m;
-      mesh.Vertices.row(i * m + j) << (R + r * std::cos(v)) * std::cos(u),
-        (R + r * std::cos(v)) * std::sin(u), r * std::sin(v);
-      const int a = i * m + j;
-      const int b = ((i + 1) % n) * m + j;
-      const int c = ((i + 1) % n) * m + (j + 1) % m;
-      const int d = i * m + (j + 1) % m;
-      // Counter-clockwise seen from outside for this parametrization.
-      mesh.Faces.row(2 * a) << a, b, c;
-      mesh.Faces.row(2 * a + 1) << a, c, d;
-    }
-  }
-  return mesh;
-}
-
-/// The four outward faces of a positive tet (VTK's local face table).
-SurfaceMesh TetSurface(const std::array<Eigen::Vector3d, 4>& p)
-{
-  SurfaceMesh mesh;
-  mesh.Vertices.resize(4, 3);
-  for (int v = 0; v < 4; ++v)
-  {
-    mesh.Vertices.row(v) = p[v].transpose();
-  }
-  mesh.Faces.resize(4, 3);
-  mesh.Faces << 0, 1, 3, 1, 2, 3, 2, 0, 3, 0, 2, 1;
-  return mesh;
-}
-
-SurfaceMesh Merge(const SurfaceMesh& a, const SurfaceMesh& b)
-{
-  SurfaceMesh mesh;
-  mesh.Vertices.resize(a.Vertices.rows() + b.Vertices.rows(), 3);
-  mesh.Vertices << a.Vertices, b.Vertices;
-  mesh.Faces.resize(a.Faces.rows() + b.Faces.rows(), 3);
-  mesh.Faces << a.Faces, (b.Faces.array() + static_cast<int>(a.Vertices.rows())).matrix();
-  return mesh;
-}
-
-/// Two tet surfaces glued at the first `shared` vertices of the second onto the first's.
-SurfaceMesh GlueTets(int shared)
-{
-  const SurfaceMesh a = TetSurface({ Eigen::Vector3d(0, 0, 0),
-    Eigen::Vector3d(1, 0, 0),
-    Eigen::Vector3d(0, 1, 0),
-    Eigen::Vector3d(0, 0, 1) });
-  SurfaceMesh b = shared == 2 ? TetSurface({ Eigen::Vector3d(0, 0, 0),
-                                  Eigen::Vector3d(1, 0, 0),
-                                  Eigen::Vector3d(0, -1, 0),
-                                  Eigen::Vector3d(0, 0, -1) })
-                              : TetSurface({ Eigen::Vector3d(0, 0, 0),
-                                  Eigen::Vector3d(0, -1, 0),
-                                  Eigen::Vector3d(-1, 0, 0),
-                                  Eigen::Vector3d(0, 0, -1) });
-  SurfaceMesh glued = Merge(a, b);
-  // Vertex i < shared of b is vertex i of a: renumber, leaving b's copy unused.
-  for (Eigen::Index f = a.Faces.rows(); f < glued.Faces.rows(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      if (glued.Faces(f, k) < 4 + shared)
-      {
-        glued.Faces(f, k) -= 4;
-      }
-    }
-  }
-  return glued;
-}
-
-bool Contains(const std::string& text, const std::string& part)
-{
-  const bool found = text.find(part) != std::string::npos;
-  if (!found)
-  {
-    std::cerr << "message \"" << text << "\" does not contain \"" << part << "\"" << std::endl;
-  }
-  return found;
-}
-
-double PolyhedronVolume(const SurfaceMesh& mesh)
-{
-  // Relative to a vertex: far from the origin the plain sum cancels catastrophically.
-  const Eigen::Vector3d origin = mesh.Vertices.row(0).transpose();
-  double sixVolume = 0.0;
-  for (int f = 0; f < mesh.Faces.rows(); ++f)
-  {
-    const Eigen::Vector3d p0 = mesh.Vertices.row(mesh.Faces(f, 0)).transpose() - origin;
-    const Eigen::Vector3d p1 = mesh.Vertices.row(mesh.Faces(f, 1)).transpose() - origin;
-    const Eigen::Vector3d p2 = mesh.Vertices.row(mesh.Faces(f, 2)).transpose() - origin;
-    sixVolume += p0.dot(p1.cross(p2));
-  }
-  return sixVolume / 6.0;
-}
-
 void TestValidShapes()
 {
   SurfaceCheckReport report;
