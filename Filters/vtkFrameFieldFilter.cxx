@@ -3,6 +3,7 @@
 
 #include "FrameField.h"
 #include "PolycubeHexArrayNames.h"
+#include "PolycubeHexArrays.h"
 #include "PolycubeHexConversion.h"
 
 #include <vtkCellArray.h>
@@ -57,23 +58,6 @@ bool ReadCuts(vtkUnstructuredGrid* input, polycubehex::CutFaces& cuts, std::stri
   return true;
 }
 
-vtkSmartPointer<vtkDoubleArray> DoubleArray(const char* name, int components, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
-
-template <typename ArrayType, typename Value>
-void SetFieldValue(vtkFieldData* fields, const char* name, Value value)
-{
-  vtkNew<ArrayType> array;
-  array->SetName(name);
-  array->InsertNextValue(value);
-  fields->AddArray(array);
-}
 } // namespace
 
 vtkFrameFieldFilter::vtkFrameFieldFilter()
@@ -87,8 +71,9 @@ int vtkFrameFieldFilter::FillOutputPortInformation(int port, vtkInformation* inf
   return 1;
 }
 
-int vtkFrameFieldFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkFrameFieldFilter::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   // 1. Get the input and outputs.
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
@@ -115,7 +100,8 @@ int vtkFrameFieldFilter::RequestData(
   params.L1Epsilon = this->L1Epsilon;
   params.GradientTolerance = this->GradientTolerance;
   params.MaxIterations = this->MaxIterations;
-  auto progress = [this](double fraction) {
+  auto progress = [this](double fraction)
+  {
     this->UpdateProgress(fraction);
     return !this->CheckAbort();
   };
@@ -137,10 +123,10 @@ int vtkFrameFieldFilter::RequestData(
   // 4. Attach the outputs.
   output->ShallowCopy(input);
   const vtkIdType cellCount = input->GetNumberOfCells();
-  auto frame = DoubleArray(names::Frame, 9, cellCount);
-  auto axisU = DoubleArray(names::FrameU, 3, cellCount);
-  auto axisV = DoubleArray(names::FrameV, 3, cellCount);
-  auto axisW = DoubleArray(names::FrameW, 3, cellCount);
+  auto frame = polycubehex::NewArray<vtkDoubleArray>(names::Frame, 9, cellCount);
+  auto axisU = polycubehex::NewArray<vtkDoubleArray>(names::FrameU, 3, cellCount);
+  auto axisV = polycubehex::NewArray<vtkDoubleArray>(names::FrameV, 3, cellCount);
+  auto axisW = polycubehex::NewArray<vtkDoubleArray>(names::FrameW, 3, cellCount);
   for (vtkIdType t = 0; t < cellCount; ++t)
   {
     const double* rotation = result.Frames.data() + 9 * t;
@@ -168,14 +154,18 @@ int vtkFrameFieldFilter::RequestData(
     }
   }
   fields->AddArray(transitions);
-  SetFieldValue<vtkIntArray>(fields, names::SingularEdgeCount, result.SingularEdgeCount);
-  SetFieldValue<vtkIntArray>(
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, names::SingularEdgeCount, result.SingularEdgeCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
     fields, names::InteriorSingularEdgeCount, result.InteriorSingularEdgeCount);
-  SetFieldValue<vtkDoubleArray>(fields, "MaxSingularEdgeDepth", result.MaxSingularEdgeDepth);
-  SetFieldValue<vtkDoubleArray>(fields, names::BoundaryAlignmentError, result.BoundaryAlignmentError);
-  SetFieldValue<vtkDoubleArray>(fields, names::FrameEnergy, result.FrameEnergy);
-  SetFieldValue<vtkIntArray>(fields, names::FrameIterations, result.FrameIterations);
-  SetFieldValue<vtkDoubleArray>(fields, "FrameSeconds",
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "MaxSingularEdgeDepth", result.MaxSingularEdgeDepth);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, names::BoundaryAlignmentError, result.BoundaryAlignmentError);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, names::FrameEnergy, result.FrameEnergy);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, names::FrameIterations, result.FrameIterations);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields,
+    "FrameSeconds",
     result.InitialFieldSeconds + result.MatchingSeconds + result.OptimizationSeconds +
       result.MeasureSeconds);
   output->SetFieldData(fields);
@@ -187,9 +177,9 @@ int vtkFrameFieldFilter::RequestData(
   vtkNew<vtkPoints> centres;
   centres->SetDataTypeToDouble();
   const vtkIdType glyphCount = (cellCount + stride - 1) / stride;
-  auto glyphU = DoubleArray(names::FrameU, 3, glyphCount);
-  auto glyphV = DoubleArray(names::FrameV, 3, glyphCount);
-  auto glyphW = DoubleArray(names::FrameW, 3, glyphCount);
+  auto glyphU = polycubehex::NewArray<vtkDoubleArray>(names::FrameU, 3, glyphCount);
+  auto glyphV = polycubehex::NewArray<vtkDoubleArray>(names::FrameV, 3, glyphCount);
+  auto glyphW = polycubehex::NewArray<vtkDoubleArray>(names::FrameW, 3, glyphCount);
   vtkNew<vtkCellArray> vertices;
   for (vtkIdType g = 0; g < glyphCount; ++g)
   {
@@ -217,7 +207,7 @@ int vtkFrameFieldFilter::RequestData(
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> type;
   type->SetName(names::SingularityType);
-  auto depth = DoubleArray("SingularEdgeDepth", 1, 0);
+  auto depth = polycubehex::NewArray<vtkDoubleArray>("SingularEdgeDepth", 1, 0);
   for (const polycubehex::SingularEdge& edge : result.SingularEdges)
   {
     const vtkIdType ids[2] = { edge.Vertices[0], edge.Vertices[1] };

@@ -3,6 +3,7 @@
 
 #include "HexExtraction.h"
 #include "PolycubeHexArrayNames.h"
+#include "PolycubeHexArrays.h"
 #include "PolycubeHexConversion.h"
 #include "vtkHexMeshQuality.h"
 
@@ -30,7 +31,8 @@ namespace
 namespace names = polycubehex::ArrayNames;
 
 /// Reads the deform filter's output into the core's input, or says what is missing.
-bool ToPolycubeTetMesh(vtkUnstructuredGrid* input, polycubehex::PolycubeTetMesh& mesh,
+bool ToPolycubeTetMesh(vtkUnstructuredGrid* input,
+  polycubehex::PolycubeTetMesh& mesh,
   std::string& why)
 {
   polycubehex::TetMesh tets;
@@ -84,14 +86,6 @@ vtkSmartPointer<vtkUnstructuredGrid> OriginalTets(const polycubehex::PolycubeTet
   return polycubehex::ToUnstructuredGrid(tets);
 }
 
-template <typename ArrayType, typename Value>
-void AddFieldValue(vtkFieldData* fields, const char* name, Value value)
-{
-  vtkNew<ArrayType> array;
-  array->SetName(name);
-  array->InsertNextValue(value);
-  fields->AddArray(array);
-}
 } // namespace
 
 vtkHexExtractFilter::vtkHexExtractFilter()
@@ -111,8 +105,9 @@ int vtkHexExtractFilter::FillOutputPortInformation(int port, vtkInformation* inf
   return 1;
 }
 
-int vtkHexExtractFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkHexExtractFilter::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   // 1. Get the input and outputs.
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
@@ -136,7 +131,8 @@ int vtkHexExtractFilter::RequestData(
   params.Smoothing = this->Smoothing;
   params.SmoothingIterations = this->SmoothingIterations;
   params.RoundingCandidates = this->RoundingCandidates;
-  auto progress = [this](double fraction) {
+  auto progress = [this](double fraction)
+  {
     this->UpdateProgress(0.8 * fraction);
     return !this->CheckAbort();
   };
@@ -170,13 +166,14 @@ int vtkHexExtractFilter::RequestData(
       fields->AddArray(array);
     }
   }
-  AddFieldValue<vtkIntArray>(fields, "PaddingHexCount", result.PaddingHexCount);
-  AddFieldValue<vtkDoubleArray>(fields, "LatticeScale", result.LatticeScale);
-  AddFieldValue<vtkDoubleArray>(
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "PaddingHexCount", result.PaddingHexCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "LatticeScale", result.LatticeScale);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMinBeforeSmoothing", result.ScaledJacobianMinBeforeSmoothing);
-  AddFieldValue<vtkDoubleArray>(
+  polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMeanBeforeSmoothing", result.ScaledJacobianMeanBeforeSmoothing);
-  AddFieldValue<vtkDoubleArray>(fields, "ExtractionSeconds",
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields,
+    "ExtractionSeconds",
     result.RoundingSeconds + result.ExtractionSeconds + result.PaddingSeconds +
       result.SmoothingSeconds);
 
@@ -186,12 +183,14 @@ int vtkHexExtractFilter::RequestData(
   quadLabels->SetName(names::PolycubeLabel);
   for (Eigen::Index q = 0; q < result.BoundaryQuads.rows(); ++q)
   {
-    const vtkIdType ids[4] = { result.BoundaryQuads(q, 0), result.BoundaryQuads(q, 1),
-      result.BoundaryQuads(q, 2), result.BoundaryQuads(q, 3) };
+    const vtkIdType ids[4] = { result.BoundaryQuads(q, 0),
+      result.BoundaryQuads(q, 1),
+      result.BoundaryQuads(q, 2),
+      result.BoundaryQuads(q, 3) };
     quads->InsertNextCell(4, ids);
-    quadLabels->InsertNextValue(
-      q < static_cast<Eigen::Index>(result.BoundaryQuadLabels.size()) ? result.BoundaryQuadLabels[q]
-                                                                       : -1);
+    quadLabels->InsertNextValue(q < static_cast<Eigen::Index>(result.BoundaryQuadLabels.size())
+        ? result.BoundaryQuadLabels[q]
+        : -1);
   }
   quadOutput->SetPolys(quads);
   quadOutput->GetCellData()->AddArray(quadLabels);

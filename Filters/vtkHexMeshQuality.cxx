@@ -3,6 +3,7 @@
 
 #include "HexMeshValidity.h"
 #include "PolycubeHexArrayNames.h"
+#include "PolycubeHexArrays.h"
 #include "PolycubeHexConversion.h"
 #include "PolycubeHexSurfaceDistance.h"
 
@@ -119,16 +120,6 @@ vtkIdType CountCloseVertexPairs(vtkDataSet* hexes, double tolerance, std::string
   return pairs;
 }
 
-template<typename ArrayType, typename Value>
-void SetFieldValue(vtkFieldData* fieldData, const char* name, Value value)
-{
-  vtkNew<ArrayType> array;
-  array->SetName(name);
-  array->SetNumberOfTuples(1);
-  array->SetValue(0, value);
-  fieldData->AddArray(array);
-}
-
 /// Everything vtkHexMeshQuality computes; `progress` may be empty.
 bool Compute(vtkUnstructuredGrid* hexes,
   vtkDataSet* reference,
@@ -210,9 +201,9 @@ bool Compute(vtkUnstructuredGrid* hexes,
   }
   output->GetCellData()->AddArray(jacobians.Values);
   vtkFieldData* fieldData = output->GetFieldData();
-  SetFieldValue<vtkIntArray>(fieldData, names::HexCount, validity.HexCount);
-  SetFieldValue<vtkDoubleArray>(fieldData, names::ScaledJacobianMin, jacobians.Min);
-  SetFieldValue<vtkDoubleArray>(fieldData, names::ScaledJacobianMean, jacobians.Mean);
+  polycubehex::SetFieldValue<vtkIntArray>(fieldData, names::HexCount, validity.HexCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fieldData, names::ScaledJacobianMin, jacobians.Min);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fieldData, names::ScaledJacobianMean, jacobians.Mean);
   vtkNew<vtkIntArray> histogram;
   histogram->SetName(names::ScaledJacobianHistogram);
   histogram->SetNumberOfTuples(HistogramBins);
@@ -221,16 +212,19 @@ bool Compute(vtkUnstructuredGrid* hexes,
     histogram->SetValue(bin, jacobians.Histogram[bin]);
   }
   fieldData->AddArray(histogram);
-  SetFieldValue<vtkIntArray>(fieldData, names::InvertedHexCount, jacobians.InvertedCount);
-  SetFieldValue<vtkIntArray>(fieldData, names::DegenerateHexCount, validity.DegenerateHexCount);
-  SetFieldValue<vtkIntArray>(
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fieldData, names::InvertedHexCount, jacobians.InvertedCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fieldData, names::DegenerateHexCount, validity.DegenerateHexCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
     fieldData, names::IrregularBoundaryVertexCount, validity.IrregularBoundaryVertexCount);
-  SetFieldValue<vtkIntArray>(fieldData, names::ValidHexMesh, valid ? 1 : 0);
-  SetFieldValue<vtkStringArray>(fieldData, names::ValidityReport, report.str());
+  polycubehex::SetFieldValue<vtkIntArray>(fieldData, names::ValidHexMesh, valid ? 1 : 0);
+  polycubehex::SetFieldValue<vtkStringArray>(fieldData, names::ValidityReport, report.str());
   if (reference)
   {
-    SetFieldValue<vtkDoubleArray>(fieldData, names::DistanceMean, distance.Mean);
-    SetFieldValue<vtkDoubleArray>(fieldData, names::DistanceHausdorff, distance.Hausdorff);
+    polycubehex::SetFieldValue<vtkDoubleArray>(fieldData, names::DistanceMean, distance.Mean);
+    polycubehex::SetFieldValue<vtkDoubleArray>(
+      fieldData, names::DistanceHausdorff, distance.Hausdorff);
   }
   polycubehex::ReportProgress(progress, 1.0);
   return true;

@@ -3,6 +3,7 @@
 
 #include "PolycubeDeformation.h"
 #include "PolycubeHexArrayNames.h"
+#include "PolycubeHexArrays.h"
 #include "PolycubeHexConversion.h"
 
 #include <vtkCellArray.h>
@@ -26,23 +27,6 @@ namespace
 {
 namespace names = polycubehex::ArrayNames;
 
-template <typename ArrayType, typename Value>
-void SetFieldValue(vtkFieldData* fields, const char* name, Value value)
-{
-  vtkNew<ArrayType> array;
-  array->SetName(name);
-  array->InsertNextValue(value);
-  fields->AddArray(array);
-}
-
-vtkSmartPointer<vtkIntArray> IntArray(const char* name, int components, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
 } // namespace
 
 vtkPolycubeDeformFilter::vtkPolycubeDeformFilter()
@@ -68,8 +52,9 @@ int vtkPolycubeDeformFilter::FillOutputPortInformation(int port, vtkInformation*
   return 1;
 }
 
-int vtkPolycubeDeformFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   // 1. Get the input and outputs.
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
@@ -103,7 +88,8 @@ int vtkPolycubeDeformFilter::RequestData(
   params.NormalDifferenceWeight = this->NormalDifferenceWeight;
   params.MinChartAreaFraction = this->MinChartAreaFraction;
   params.Flatten = this->Flatten;
-  auto progress = [this](double fraction) {
+  auto progress = [this](double fraction)
+  {
     this->UpdateProgress(fraction);
     return !this->CheckAbort();
   };
@@ -155,7 +141,7 @@ int vtkPolycubeDeformFilter::RequestData(
   vtkNew<vtkIdTypeArray> originalCellId;
   originalCellId->SetName(names::OriginalCellId);
   originalCellId->SetNumberOfTuples(cellCount);
-  auto labels = IntArray(names::PolycubeLabels, 4, cellCount);
+  auto labels = polycubehex::NewArray<vtkIntArray>(names::PolycubeLabels, 4, cellCount);
   for (vtkIdType t = 0; t < cellCount; ++t)
   {
     outputCells->CopyData(inputCells, result.OriginalCellId[t], t);
@@ -173,12 +159,12 @@ int vtkPolycubeDeformFilter::RequestData(
 
   vtkFieldData* fields = output->GetFieldData();
   fields->ShallowCopy(input->GetFieldData());
-  SetFieldValue<vtkIntArray>(fields, names::CornerCount, result.CornerCount);
-  SetFieldValue<vtkIntArray>(fields, names::InvertedTetCount, result.InvertedTetCount);
-  SetFieldValue<vtkDoubleArray>(fields, names::PolycubeResidual, result.Residual);
-  SetFieldValue<vtkStringArray>(fields, names::Guidance, std::string("Uniform"));
-  SetFieldValue<vtkIntArray>(fields, "ChartCount", result.ChartCount);
-  SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, names::CornerCount, result.CornerCount);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, names::InvertedTetCount, result.InvertedTetCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, names::PolycubeResidual, result.Residual);
+  polycubehex::SetFieldValue<vtkStringArray>(fields, names::Guidance, std::string("Uniform"));
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "ChartCount", result.ChartCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
   vtkNew<vtkDoubleArray> translations; // no cuts in uniform guidance: zero tuples
   translations->SetName(names::CutTranslations);
   translations->SetNumberOfComponents(3);
@@ -187,12 +173,13 @@ int vtkPolycubeDeformFilter::RequestData(
   surface->SetPoints(output->GetPoints());
   vtkNew<vtkCellArray> triangles;
   const vtkIdType faceCount = result.BoundaryFaces.rows();
-  auto faceLabel = IntArray(names::PolycubeLabel, 1, faceCount);
-  auto chartId = IntArray(names::ChartId, 1, faceCount);
+  auto faceLabel = polycubehex::NewArray<vtkIntArray>(names::PolycubeLabel, 1, faceCount);
+  auto chartId = polycubehex::NewArray<vtkIntArray>(names::ChartId, 1, faceCount);
   for (vtkIdType f = 0; f < faceCount; ++f)
   {
-    const vtkIdType ids[3] = { result.BoundaryFaces(f, 0), result.BoundaryFaces(f, 1),
-      result.BoundaryFaces(f, 2) };
+    const vtkIdType ids[3] = {
+      result.BoundaryFaces(f, 0), result.BoundaryFaces(f, 1), result.BoundaryFaces(f, 2)
+    };
     triangles->InsertNextCell(3, ids);
     faceLabel->SetValue(f, result.BoundaryFaceLabel[f]);
     chartId->SetValue(f, result.ChartId[f]);
