@@ -47,6 +47,15 @@ assert field(hexes, "ScaledJacobianMin") > 0
 # The field data of every stage reaches the hex mesh (DESIGN.md section 2).
 assert field(hexes, "BettiNumber") == 0
 
+# The one-call glyph helper shows three arrow sets, one per frame axis (needs X: CTest runs
+# under xvfb-run).
+from polycubehex.visualization import show_frame_glyphs  # noqa: E402
+
+glyphs = show_frame_glyphs(frames)
+assert [g.OrientationArray[1] for g in glyphs] == ["FrameU", "FrameV", "FrameW"]
+for glyph in glyphs:
+    assert glyph.GetDataInformation().GetNumberOfPoints() > 0
+
 # FrameField guidance is refused clearly until the closed-form stage lands; nothing crashes.
 polycube.Guidance = "FrameField"
 try:

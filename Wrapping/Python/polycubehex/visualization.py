@@ -1,0 +1,47 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""ParaView helpers (pvpython, pvbatch or the GUI's Python shell).
+
+    from polycubehex.visualization import show_frame_glyphs
+    frames = FrameField(Input=cuts)
+    show_frame_glyphs(frames)       # three arrow sets: FrameU red, FrameV green, FrameW blue
+"""
+
+COLORS = (("FrameU", (0.85, 0.1, 0.1)), ("FrameV", (0.1, 0.65, 0.1)), ("FrameW", (0.1, 0.2, 0.9)))
+
+
+def show_frame_glyphs(frame_field, view=None, scale_factor=None):
+    """Shows the frame field's glyph points (output 1 of Frame Field) as three arrow glyphs,
+    one per frame axis, coloured red, green and blue, sized to the spacing of the points.
+
+    frame_field   the Frame Field proxy
+    view          a render view (default: the active one)
+    scale_factor  arrow length in data units (default: 0.8 of the mean spacing of the points)
+    Returns the three Glyph proxies.
+    """
+    from paraview import simple
+
+    view = view or simple.GetActiveViewOrCreate("RenderView")
+    points = simple.OutputPort(frame_field, 1)
+    frame_field.UpdatePipeline()
+    info = points.GetDataInformation()
+    count = max(1, info.GetNumberOfPoints())
+    if scale_factor is None:
+        bounds = info.GetBounds()
+        extents = [max(bounds[2 * i + 1] - bounds[2 * i], 0.0) for i in range(3)]
+        volume = max(extents[0] * extents[1] * extents[2], 1e-30)
+        scale_factor = 0.8 * (volume / count) ** (1.0 / 3.0)
+    glyphs = []
+    for array, color in COLORS:
+        glyph = simple.Glyph(registrationName="Frame glyphs %s" % array, Input=points,
+                             GlyphType="Arrow")
+        glyph.OrientationArray = ["POINTS", array]
+        glyph.ScaleArray = ["POINTS", "No scale array"]
+        glyph.ScaleFactor = scale_factor
+        glyph.GlyphMode = "All Points"
+        display = simple.Show(glyph, view)
+        display.ColorArrayName = ["POINTS", ""]  # solid colour
+        display.DiffuseColor = color
+        display.AmbientColor = color
+        glyphs.append(glyph)
+    simple.Hide(points, view)
+    return glyphs
