@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CutMesh.h"
 
+#include "DisjointSets.h"
 #include "TetGeometry.h"
 
 #include <numeric>
@@ -8,18 +9,6 @@
 namespace polycubehex
 {
 
-namespace
-{
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-} // namespace
 
 int SplitAlongFaces(int vertexCount,
   const Tets& cells,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CutSurface.h"
 
+#include "DisjointSets.h"
 #include "TetGeometry.h"
 
 #include <algorithm>
@@ -14,15 +15,6 @@ namespace polycubehex
 
 namespace
 {
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
 
 std::string EdgeName(const TetAdjacency& adjacency, int edge)
 {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "FrameFieldMatching.h"
 
+#include "DisjointSets.h"
 #include "CubeSymmetry.h"
 
 #include <algorithm>
@@ -9,18 +10,6 @@
 namespace polycubehex
 {
 
-namespace
-{
-int FindRoot(std::vector<int>& parent, int x)
-{
-  while (parent[x] != x)
-  {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
-}
-} // namespace
 
 int MatchFramesAlongSpanningTree(const Tets& neighbors,
   const Tets& faceCut,

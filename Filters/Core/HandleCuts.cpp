@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HandleCuts.h"
 
+#include "DisjointSets.h"
 #include "CutMesh.h"
 #include "CutMinimize.h"
 #include "CutRepair.h"
@@ -21,15 +22,6 @@ namespace polycubehex
 
 namespace
 {
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
 
 /// The mesh cut by the cuts made so far, with its topology.
 struct CutState

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HexLatticeExtraction.h"
 
+#include "DisjointSets.h"
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -86,15 +87,6 @@ bool Barycentric(const std::array<Eigen::Vector3d, 4>& u,
   return inside;
 }
 
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
 
 bool ShareVertex(const Tets& cells, int a, int b)
 {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HexMeshValidity.h"
 
+#include "DisjointSets.h"
 #include <algorithm>
 #include <numeric>
 #include <sstream>
@@ -52,15 +53,6 @@ bool IsReversed(const std::array<int, 4>& a, const std::array<int, 4>& b)
   return p < 4 && b[(p + 3) % 4] == a[1] && b[(p + 2) % 4] == a[2] && b[(p + 1) % 4] == a[3];
 }
 
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
 
 /// Degenerate hexes: a repeated index makes at least one face or edge collapse.
 void CheckDistinctVertices(const HexMesh& mesh, HexMeshValidity& result, std::ostream& report)

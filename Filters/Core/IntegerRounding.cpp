@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "IntegerRounding.h"
 
+#include "DisjointSets.h"
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -25,15 +26,6 @@ constexpr int FaceTable[4][3] = { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 2,
 
 const char* const LabelNames[6] = { "+X", "-X", "+Y", "-Y", "+Z", "-Z" };
 
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
 
 void Unite(std::vector<int>& parent, int a, int b)
 {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolycubeDeformation.h"
 
+#include "DisjointSets.h"
 #include "PolycubeCharts.h"
 #include "PolycubeEnergy.h"
 #include "PolycubeNewton.h"
@@ -215,15 +216,6 @@ bool ShareOne(const std::vector<int>& a, const std::vector<int>& b)
   return false;
 }
 
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[static_cast<size_t>(i)] != i)
-  {
-    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
-    i = parent[static_cast<size_t>(i)];
-  }
-  return i;
-}
 
 Status CheckInput(const TetMesh& input)
 {

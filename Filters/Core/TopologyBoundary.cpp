@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TopologyBoundary.h"
 
+#include "DisjointSets.h"
 #include "TetGeometry.h"
 
 #include <numeric>
@@ -9,19 +10,6 @@
 namespace polycubehex
 {
 
-namespace
-{
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-} // namespace
 
 Status ComputeBoundaryTopology(const Tets& cells,
   const TetAdjacency& adjacency,
