@@ -72,19 +72,10 @@ FrameFieldEnergy::FrameFieldEnergy(const TetMesh& mesh,
 
   // (4): A_f / A per boundary face.
   const int faceCount = static_cast<int>(topology.BoundaryFaces.rows());
-  std::vector<double> area(static_cast<size_t>(faceCount));
-  std::vector<Eigen::Vector3d> normal(static_cast<size_t>(faceCount));
-  double totalArea = 0.0;
-  for (int f = 0; f < faceCount; ++f)
-  {
-    const Eigen::Vector3d a = mesh.Vertices.row(topology.BoundaryFaces(f, 0)).transpose();
-    const Eigen::Vector3d b = mesh.Vertices.row(topology.BoundaryFaces(f, 1)).transpose();
-    const Eigen::Vector3d c = mesh.Vertices.row(topology.BoundaryFaces(f, 2)).transpose();
-    const Eigen::Vector3d n = (b - a).cross(c - a);
-    area[f] = 0.5 * n.norm();
-    normal[f] = area[f] > 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
-    totalArea += area[f];
-  }
+  std::vector<double> area;
+  std::vector<Eigen::Vector3d> normal;
+  double totalArea = ComputeFaceAreasAndNormals(
+    mesh.Vertices, topology.BoundaryFaces, Eigen::Vector3d::Zero(), area, normal);
   if (!(totalArea > 0.0))
   {
     totalArea = 1.0;

@@ -112,19 +112,10 @@ Status ComputeOctahedralField(const TetMesh& mesh,
   const double diagonal2 = (hi - lo).squaredNorm();
 
   const int faceCount = static_cast<int>(topology.BoundaryFaces.rows());
-  std::vector<double> area(static_cast<size_t>(faceCount));
-  std::vector<Eigen::Vector3d> normal(static_cast<size_t>(faceCount));
-  double totalArea = 0.0;
-  for (int f = 0; f < faceCount; ++f)
-  {
-    const Eigen::Vector3d a = mesh.Vertices.row(topology.BoundaryFaces(f, 0)).transpose();
-    const Eigen::Vector3d b = mesh.Vertices.row(topology.BoundaryFaces(f, 1)).transpose();
-    const Eigen::Vector3d c = mesh.Vertices.row(topology.BoundaryFaces(f, 2)).transpose();
-    const Eigen::Vector3d n = (b - a).cross(c - a);
-    area[f] = 0.5 * n.norm();
-    normal[f] = area[f] > 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::UnitZ();
-    totalArea += area[f];
-  }
+  std::vector<double> area;
+  std::vector<Eigen::Vector3d> normal;
+  const double totalArea = ComputeFaceAreasAndNormals(
+    mesh.Vertices, topology.BoundaryFaces, Eigen::Vector3d::UnitZ(), area, normal);
   if (!(totalVolume > 0.0) || !(totalArea > 0.0))
   {
     return Status::Failure("The octahedral field needs a mesh of positive volume with a boundary.");

@@ -9,7 +9,9 @@
 namespace polycubehex
 {
 
-double TetSignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+double TetSignedVolume(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c,
   const Eigen::Vector3d& d)
 {
   return (b - a).cross(c - a).dot(d - a) / 6.0;
@@ -17,8 +19,10 @@ double TetSignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const
 
 double TetSignedVolume(const Points& x, const Tets& cells, int t)
 {
-  return TetSignedVolume(x.row(cells(t, 0)).transpose(), x.row(cells(t, 1)).transpose(),
-    x.row(cells(t, 2)).transpose(), x.row(cells(t, 3)).transpose());
+  return TetSignedVolume(x.row(cells(t, 0)).transpose(),
+    x.row(cells(t, 1)).transpose(),
+    x.row(cells(t, 2)).transpose(),
+    x.row(cells(t, 3)).transpose());
 }
 
 namespace
@@ -51,10 +55,13 @@ void ComputeTetTopology(int vertexCount, const Tets& cells, TetTopology& topolog
       keys.push_back(key);
     }
   }
-  std::sort(keys.begin(), keys.end(), [](const FaceKey& a, const FaceKey& b) {
-    return a.Sorted != b.Sorted ? a.Sorted < b.Sorted
-                                : (a.Tet != b.Tet ? a.Tet < b.Tet : a.Local < b.Local);
-  });
+  std::sort(keys.begin(),
+    keys.end(),
+    [](const FaceKey& a, const FaceKey& b)
+    {
+      return a.Sorted != b.Sorted ? a.Sorted < b.Sorted
+                                  : (a.Tet != b.Tet ? a.Tet < b.Tet : a.Local < b.Local);
+    });
 
   topology.Neighbors.setConstant(tetCount, 4, -1);
   topology.TetFaceToBoundaryFace.setConstant(tetCount, 4, -1);
@@ -147,16 +154,17 @@ Triangles ComputeFaceAdjacency(int vertexCount, const Triangles& faces)
       halfEdges.push_back({ std::min(a, b), std::max(a, b), f, e });
     }
   }
-  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.A != y.A ? x.A < y.A : (x.B != y.B ? x.B < y.B : x.Face < y.Face);
-  });
+  std::sort(halfEdges.begin(),
+    halfEdges.end(),
+    [](const HalfEdge& x, const HalfEdge& y)
+    { return x.A != y.A ? x.A < y.A : (x.B != y.B ? x.B < y.B : x.Face < y.Face); });
   Triangles adjacency;
   adjacency.setConstant(faceCount, 3, -1);
   for (size_t i = 0; i < halfEdges.size();)
   {
     size_t j = i + 1;
-    while (j < halfEdges.size() && halfEdges[j].A == halfEdges[i].A &&
-      halfEdges[j].B == halfEdges[i].B)
+    while (
+      j < halfEdges.size() && halfEdges[j].A == halfEdges[i].A && halfEdges[j].B == halfEdges[i].B)
     {
       ++j;
     }
@@ -210,6 +218,32 @@ Points FromUnitDiagonal(const UnitDiagonalFrame& frame, const Points& x)
 {
   Points y = (x * frame.Scale).rowwise() + frame.Center;
   return y;
+}
+
+double ComputeFaceAreasAndNormals(const Points& x,
+  const Triangles& faces,
+  const Eigen::Vector3d& zeroAreaNormal,
+  std::vector<double>& area,
+  std::vector<Eigen::Vector3d>& normal)
+{
+  const int faceCount = static_cast<int>(faces.rows());
+  area.assign(static_cast<size_t>(faceCount), 0.0);
+  normal.assign(static_cast<size_t>(faceCount), zeroAreaNormal);
+  double totalArea = 0.0;
+  for (int f = 0; f < faceCount; ++f)
+  {
+    const Eigen::Vector3d a = x.row(faces(f, 0)).transpose();
+    const Eigen::Vector3d b = x.row(faces(f, 1)).transpose();
+    const Eigen::Vector3d c = x.row(faces(f, 2)).transpose();
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    area[f] = 0.5 * n.norm();
+    if (area[f] > 0.0)
+    {
+      normal[f] = n.normalized();
+    }
+    totalArea += area[f];
+  }
+  return totalArea;
 }
 
 } // namespace polycubehex

@@ -19,7 +19,9 @@ namespace polycubehex
 constexpr int TetFaceTable[4][3] = { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 2, 1 } };
 
 /// Signed volume of the tet (a, b, c, d); positive for VTK's node order.
-double TetSignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+double TetSignedVolume(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c,
   const Eigen::Vector3d& d);
 
 /// Signed volume of tet `t` of a mesh whose vertex positions are `x`.
@@ -77,5 +79,13 @@ Points ToUnitDiagonal(const UnitDiagonalFrame& frame, const Points& x);
 
 /// Inverts the frame: returns x * Scale + Center.
 Points FromUnitDiagonal(const UnitDiagonalFrame& frame, const Points& x);
+
+/// Area and unit outward normal of every face of `faces` (#F by 3, indices into `x`).
+/// A face of zero area gets `zeroAreaNormal`. Returns the total area.
+double ComputeFaceAreasAndNormals(const Points& x,
+  const Triangles& faces,
+  const Eigen::Vector3d& zeroAreaNormal,
+  std::vector<double>& area,
+  std::vector<Eigen::Vector3d>& normal);
 
 } // namespace polycubehex
