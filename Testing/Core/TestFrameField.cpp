@@ -7,6 +7,7 @@
 #include "CubeSymmetry.h"
 #include "FrameField.h"
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 #include "TetGeometry.h"
 
 #include <Eigen/Geometry>
@@ -19,6 +20,7 @@
 #include <vector>
 
 using namespace polycubehex;
+using polycubehex_test::CubeGrid;
 
 namespace
 {
@@ -34,41 +36,6 @@ void Orient(TetMesh& mesh)
       std::swap(mesh.Cells(t, 2), mesh.Cells(t, 3));
     }
   }
-}
-
-// An n^3 grid of [-1, 1]^3, each cube split into 6 tets around its main diagonal.
-TetMesh MakeCube(int n)
-{
-  TetMesh mesh;
-  const int m = n + 1;
-  mesh.Vertices.resize(m * m * m, 3);
-  auto id = [m](int i, int j, int k) { return (i * m + j) * m + k; };
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j)
-      for (int k = 0; k < m; ++k)
-        mesh.Vertices.row(id(i, j, k)) << -1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n,
-          -1.0 + 2.0 * k / n;
-  const int perms[6][3] = {
-    { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 }
-  };
-  mesh.Cells.resize(6 * n * n * n, 4);
-  int t = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k)
-        for (const auto& p : perms)
-        {
-          int c[3] = { i, j, k };
-          mesh.Cells(t, 0) = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s)
-          {
-            ++c[p[s]];
-            mesh.Cells(t, s + 1) = id(c[0], c[1], c[2]);
-          }
-          ++t;
-        }
-  Orient(mesh);
-  return mesh;
 }
 
 // A 2D triangulation: points and counter-clockwise triangles.
@@ -277,7 +244,7 @@ int main(int, char*[])
   // frames there towards each other against the smoothed l1 term, whose slope vanishes at exact
   // alignment; they settle about 0.1 degree off (measured 1.6e-3).
   {
-    TetMesh mesh = MakeCube(6);
+    TetMesh mesh = CubeGrid(6);
     const Eigen::Matrix3d q =
       Eigen::AngleAxisd(Pi / 6.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
     mesh.Vertices = (mesh.Vertices * q.transpose()).eval(); // x' = Q x
@@ -432,7 +399,7 @@ int main(int, char*[])
 
   // Refusals: inconsistent cut sides, an inverted tet.
   {
-    TetMesh mesh = MakeCube(2);
+    TetMesh mesh = CubeGrid(2);
     FrameFieldResult result;
     CutFaces cuts;
     cuts.Ids.setConstant(mesh.Cells.rows(), 4, -1);

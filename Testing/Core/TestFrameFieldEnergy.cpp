@@ -6,6 +6,7 @@
 #include "CubeSymmetry.h"
 #include "FrameFieldEnergy.h"
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 #include "TetGeometry.h"
 
 #include <Eigen/Geometry>
@@ -16,47 +17,10 @@
 #include <vector>
 
 using namespace polycubehex;
+using polycubehex_test::CubeGrid;
 
 namespace
 {
-// An n^3 grid of [-1, 1]^3, 6 tets per cube, positively oriented.
-TetMesh MakeCube(int n)
-{
-  TetMesh mesh;
-  const int m = n + 1;
-  mesh.Vertices.resize(m * m * m, 3);
-  auto id = [m](int i, int j, int k) { return (i * m + j) * m + k; };
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j)
-      for (int k = 0; k < m; ++k)
-        mesh.Vertices.row(id(i, j, k)) << -1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n,
-          -1.0 + 2.0 * k / n;
-  const int perms[6][3] = {
-    { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 }
-  };
-  mesh.Cells.resize(6 * n * n * n, 4);
-  int t = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k)
-        for (const auto& p : perms)
-        {
-          int c[3] = { i, j, k };
-          mesh.Cells(t, 0) = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s)
-          {
-            ++c[p[s]];
-            mesh.Cells(t, s + 1) = id(c[0], c[1], c[2]);
-          }
-          if (TetSignedVolume(mesh.Vertices, mesh.Cells, t) < 0.0)
-          {
-            std::swap(mesh.Cells(t, 2), mesh.Cells(t, 3));
-          }
-          ++t;
-        }
-  return mesh;
-}
-
 double Centroid(const TetMesh& mesh, int t, int axis)
 {
   double c = 0.0;
@@ -69,7 +33,7 @@ double Centroid(const TetMesh& mesh, int t, int axis)
 int main(int, char*[])
 {
   // A 4^3 cube cut by the plane x = 0 (not a handle cut, but the energy does not care).
-  TetMesh mesh = MakeCube(4);
+  TetMesh mesh = CubeGrid(4);
   mesh.Vertices.col(1) *= 1.3; // not a cube, so that no term is symmetric by accident
   TetTopology topology;
   ComputeTetTopology(static_cast<int>(mesh.Vertices.rows()), mesh.Cells, topology);

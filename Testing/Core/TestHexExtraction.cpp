@@ -7,6 +7,7 @@
 #include "HexScaledJacobian.h"
 
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 
 #include <Eigen/Geometry>
 
@@ -20,6 +21,7 @@
 #include <vector>
 
 using namespace polycubehex;
+using polycubehex_test::BlockCells;
 
 namespace
 {
@@ -129,27 +131,11 @@ PolycubeTetMesh CubeComplex(const std::vector<std::array<int, 3>>& cubes,
   return mesh;
 }
 
-std::vector<std::array<int, 3>> Block(int nx, int ny, int nz)
-{
-  std::vector<std::array<int, 3>> cubes;
-  for (int i = 0; i < nx; ++i)
-  {
-    for (int j = 0; j < ny; ++j)
-    {
-      for (int k = 0; k < nz; ++k)
-      {
-        cubes.push_back({ i, j, k });
-      }
-    }
-  }
-  return cubes;
-}
-
 /// An L-shaped prism: 3 x 3 x 2 cubes minus the 2 x 2 x 2 block at the far corner (10 cubes).
 std::vector<std::array<int, 3>> LShape()
 {
   std::vector<std::array<int, 3>> cubes;
-  for (const auto& cube : Block(3, 3, 2))
+  for (const auto& cube : BlockCells(3, 3, 2))
   {
     if (cube[0] == 0 || cube[1] == 0)
     {
@@ -369,7 +355,7 @@ HexExtractionResult Run(const char* name,
 /// Exact cube counts and perfect hexes: a 2 x 2 x 2 block at resolution n gives n^3 cubes.
 void TestCube()
 {
-  const PolycubeTetMesh input = CubeComplex(Block(2, 2, 2));
+  const PolycubeTetMesh input = CubeComplex(BlockCells(2, 2, 2));
   for (int n = 1; n <= 6; ++n)
   {
     const HexExtractionResult r = Run("cube", input, Raw(n * n * n));
@@ -416,7 +402,7 @@ void TestLShape()
 /// boundary vertices lie on the original's boundary.
 void TestBentOriginal()
 {
-  PolycubeTetMesh input = CubeComplex(Block(3, 2, 2));
+  PolycubeTetMesh input = CubeComplex(BlockCells(3, 2, 2));
   for (int v = 0; v < input.OriginalVertices.rows(); ++v)
   {
     input.OriginalVertices.row(v) = Bend(input.PolycubeVertices.row(v));
@@ -506,7 +492,7 @@ void TestOverlappingHelix()
 /// budget shared between the layer and the core.
 void TestPadding()
 {
-  const PolycubeTetMesh input = CubeComplex(Block(2, 2, 2));
+  const PolycubeTetMesh input = CubeComplex(BlockCells(2, 2, 2));
   for (int n = 2; n <= 4; ++n)
   {
     HexExtractionParameters params = Raw(n * n * n + 6 * n * n);
@@ -562,7 +548,7 @@ void TestPadding()
   CheckValidHexMesh(r.Mesh, "L + padding + smoothing");
   PCH_CHECK(BoundaryDistance(r, l) < 1e-9);
 
-  PolycubeTetMesh bent = CubeComplex(Block(3, 2, 2));
+  PolycubeTetMesh bent = CubeComplex(BlockCells(3, 2, 2));
   for (int v = 0; v < bent.OriginalVertices.rows(); ++v)
   {
     bent.OriginalVertices.row(v) = Bend(bent.PolycubeVertices.row(v));
@@ -580,7 +566,7 @@ void TestPadding()
 /// Inputs extraction must refuse, each with a message that says why.
 void TestRefusals()
 {
-  const PolycubeTetMesh good = CubeComplex(Block(2, 2, 2));
+  const PolycubeTetMesh good = CubeComplex(BlockCells(2, 2, 2));
   HexExtractionResult result;
 
   PolycubeTetMesh inverted = good;
@@ -691,7 +677,7 @@ void TestStaircase()
 /// A larger block for timing: 8 x 6 x 4 cubes (1152 tets) at 20k hexes with padding and smoothing.
 void TestTiming()
 {
-  const PolycubeTetMesh input = CubeComplex(Block(8, 6, 4));
+  const PolycubeTetMesh input = CubeComplex(BlockCells(8, 6, 4));
   HexExtractionParameters params;
   params.TargetHexCount = 20000;
   const HexExtractionResult r = Run("block 8x6x4, 20k", input, params);

@@ -5,6 +5,7 @@
 #include "IntegerRounding.h"
 
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 
 #include <Eigen/Geometry>
 
@@ -16,6 +17,7 @@
 #include <vector>
 
 using namespace polycubehex;
+using polycubehex_test::BlockCells;
 
 namespace
 {
@@ -116,22 +118,6 @@ Polycube Cubes(const std::vector<std::array<int, 3>>& cubes)
   return result;
 }
 
-std::vector<std::array<int, 3>> Block(int nx, int ny, int nz)
-{
-  std::vector<std::array<int, 3>> cubes;
-  for (int i = 0; i < nx; ++i)
-  {
-    for (int j = 0; j < ny; ++j)
-    {
-      for (int k = 0; k < nz; ++k)
-      {
-        cubes.push_back({ i, j, k });
-      }
-    }
-  }
-  return cubes;
-}
-
 bool AllIntegers(const Eigen::VectorXd& values)
 {
   return (values.array() - values.array().round()).abs().maxCoeff() == 0.0;
@@ -156,7 +142,7 @@ bool ChartsOnPlanes(const ChartPlanes& charts, const IntegerRoundingResult& resu
 
 void TestCharts()
 {
-  const Polycube cube = Cubes(Block(2, 2, 2));
+  const Polycube cube = Cubes(BlockCells(2, 2, 2));
   ChartPlanes charts;
   PCH_CHECK(ComputeChartPlanes(cube.Positions, cube.Cells, cube.Labels, charts).Ok());
   PCH_CHECK(charts.ChartLabel.size() == 6);
@@ -180,7 +166,7 @@ void TestCharts()
 
   // An L-shaped prism: 3 x-planes, 3 y-planes, 2 z-planes, one chart each.
   std::vector<std::array<int, 3>> l;
-  for (const auto& c : Block(3, 3, 2))
+  for (const auto& c : BlockCells(3, 3, 2))
   {
     if (c[0] == 0 || c[1] == 0)
     {
@@ -224,7 +210,7 @@ void TestCharts()
 
 void TestSolver()
 {
-  Polycube cube = Cubes(Block(3, 2, 2));
+  Polycube cube = Cubes(BlockCells(3, 2, 2));
   // Shear the interior a little so that the free coordinates matter.
   for (int v = 0; v < cube.Positions.rows(); ++v)
   {
@@ -265,7 +251,7 @@ void TestSolver()
 /// Both untanglers repair a polycube whose free vertex was pushed through its neighbours.
 void TestUntangle()
 {
-  const Polycube cube = Cubes(Block(2, 2, 2));
+  const Polycube cube = Cubes(BlockCells(2, 2, 2));
   ChartPlanes charts;
   PCH_CHECK(ComputeChartPlanes(cube.Positions, cube.Cells, cube.Labels, charts).Ok());
   PolycubePlaneSolver solver;
@@ -327,7 +313,7 @@ IntegerRoundingResult Round(const Polycube& polycube,
 void TestRounding()
 {
   // A scaled block: planes at 0 and 2.6 (x), 0 and 1.3 (y, z) round to 0 and 3, 0 and 1.
-  Polycube block = Cubes(Block(2, 1, 1));
+  Polycube block = Cubes(BlockCells(2, 1, 1));
   block.Positions *= 1.3;
   ChartPlanes charts;
   IntegerRoundingResult r = Round(block, charts);
@@ -362,7 +348,7 @@ void TestRounding()
   PCH_CHECK(r.MaxPlaneShift >= 0.69); // 1.3 -> 2: the separation, not the nearest integer
 
   // A slab 0.2 thick: its two faces end one unit apart, not on one plane.
-  Polycube slab = Cubes(Block(3, 3, 1));
+  Polycube slab = Cubes(BlockCells(3, 3, 1));
   slab.Positions.col(2) *= 0.2;
   r = Round(slab, charts);
   double low = 1e9;
@@ -379,7 +365,7 @@ void TestRounding()
 
   // A slab 1.4 thick rounds to 1 (volume ratio 0.71): refused when that is not allowed and
   // only the nearest integer may be tried.
-  Polycube thick = Cubes(Block(2, 2, 1));
+  Polycube thick = Cubes(BlockCells(2, 2, 1));
   thick.Positions.col(2) *= 1.4;
   IntegerRoundingParameters strict;
   strict.CandidateCount = 1;

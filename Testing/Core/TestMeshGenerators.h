@@ -360,4 +360,54 @@ inline double PolyhedronVolume(const SurfaceMesh& mesh)
   return sixVolume / 6.0;
 }
 
+/// An n^3 grid of the cube [-1, 1]^3, each grid cube split into 6 tets around its main
+/// diagonal, positively oriented (a negative tet gets its vertices 2 and 3 swapped).
+inline TetMesh CubeGrid(int n)
+{
+  TetMesh mesh;
+  const int m = n + 1;
+  mesh.Vertices.resize(m * m * m, 3);
+  auto id = [m](int i, int j, int k) { return (i * m + j) * m + k; };
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k)
+        mesh.Vertices.row(id(i, j, k)) << -1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n,
+          -1.0 + 2.0 * k / n;
+  const int perms[6][3] = {
+    { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 }
+  };
+  mesh.Cells.resize(6 * n * n * n, 4);
+  int t = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+        for (const auto& p : perms)
+        {
+          int c[3] = { i, j, k };
+          mesh.Cells(t, 0) = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s)
+          {
+            ++c[p[s]];
+            mesh.Cells(t, s + 1) = id(c[0], c[1], c[2]);
+          }
+          if (polycubehex::TetSignedVolume(mesh.Vertices, mesh.Cells, t) < 0.0)
+          {
+            std::swap(mesh.Cells(t, 2), mesh.Cells(t, 3));
+          }
+          ++t;
+        }
+  return mesh;
+}
+
+/// The integer corners (i, j, k) of an nx by ny by nz block of unit cubes.
+inline std::vector<std::array<int, 3>> BlockCells(int nx, int ny, int nz)
+{
+  std::vector<std::array<int, 3>> cubes;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k)
+        cubes.push_back({ i, j, k });
+  return cubes;
+}
+
 } // namespace polycubehex_test
