@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "IntegerRounding.h"
 
+#include "PolycubePlaneRelaxation.h"
+
 #include "DisjointSets.h"
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
@@ -1277,6 +1279,7 @@ Status roundPolycubePlanes(const Points& rest,
   result.PlanesBefore = solver.ReferencePlanes();
   result.FallbackCount = 0;
   result.CarefulPath = false;
+  result.Relaxed = false;
 
   // Start from the optimum with the separations (the reference planes when the charts are flat
   // and every separated pair is at least one unit apart).
@@ -1313,6 +1316,26 @@ Status roundPolycubePlanes(const Points& rest,
     return status;
   }
   if (!finish(planes))
+  {
+    // The same integers, reached by moving the planes under a barrier (every tet stays
+    // positive) instead of the linear re-solve.
+    PlaneRelaxationResult relaxation;
+    if (RelaxPolycubeToPlanes(rest,
+          reference,
+          cells,
+          charts,
+          planes,
+          PlaneRelaxationParameters(),
+          result.Positions,
+          relaxation,
+          [&progress](double p) { return ReportProgress(progress, 0.2 + 0.8 * p); }) &&
+      relaxation.MinVolumeRatio >= params.MinimumVolumeRatio)
+    {
+      result.MinVolumeRatio = relaxation.MinVolumeRatio;
+      result.Relaxed = true;
+    }
+  }
+  if (!result.Relaxed && !(result.MinVolumeRatio >= params.MinimumVolumeRatio))
   {
     // Careful path: each candidate must keep the re-solved polycube positive.
     result.CarefulPath = true;

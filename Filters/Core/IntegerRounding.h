@@ -173,6 +173,10 @@ struct IntegerRoundingResult
   /// False when rounding with the separations alone, then re-solving and untangling, kept every
   /// tet positive; true when the careful path (a volume check per candidate) was needed.
   bool CarefulPath = false;
+  /// True when the planes were moved to their integers by the barrier-guarded relaxation
+  /// (PolycubePlaneRelaxation.h) because the linear re-solve and untangling left a tet below
+  /// MinimumVolumeRatio.
+  bool Relaxed = false;
 };
 
 /// Rounds every chart plane of `reference` to an integer greedily and re-solves the vertices.

@@ -84,6 +84,61 @@ PolycubeCharts ComputePolycubeCharts(const Points& x,
   return charts;
 }
 
+std::vector<int> ChartBoundaryTurns(const Triangles& faces,
+  const Triangles& adjacency,
+  const PolycubeCharts& charts)
+{
+  const int chartCount = charts.Count();
+  std::vector<int> turns(static_cast<size_t>(chartCount), std::numeric_limits<int>::max());
+  // Boundary half-edges of each chart, chart on the left: start vertex -> (end vertex, the
+  // neighbouring chart's label).
+  std::vector<std::multimap<int, std::pair<int, int>>> halfEdges(static_cast<size_t>(chartCount));
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+  {
+    const int chart = charts.FaceChart[static_cast<size_t>(f)];
+    for (int e = 0; e < 3; ++e)
+    {
+      const int g = adjacency(f, e);
+      if (g < 0 || charts.FaceChart[static_cast<size_t>(g)] == chart)
+      {
+        continue;
+      }
+      const int other = charts.ChartLabel[static_cast<size_t>(charts.FaceChart[static_cast<size_t>(g)])];
+      halfEdges[static_cast<size_t>(chart)].emplace(
+        faces(f, e), std::make_pair(faces(f, (e + 1) % 3), other));
+    }
+  }
+  for (int c = 0; c < chartCount; ++c)
+  {
+    auto& edges = halfEdges[static_cast<size_t>(c)];
+    while (!edges.empty())
+    {
+      // Walk one loop, recording the axis of the neighbour along it.
+      std::vector<int> axes;
+      auto it = edges.begin();
+      const int start = it->first;
+      for (size_t guard = 0; it != edges.end() && guard < faces.size(); ++guard)
+      {
+        const int next = it->second.first;
+        axes.push_back(it->second.second / 2);
+        edges.erase(it);
+        if (next == start)
+        {
+          break;
+        }
+        it = edges.find(next);
+      }
+      int count = 0;
+      for (size_t i = 0; i < axes.size(); ++i)
+      {
+        count += axes[i] != axes[(i + 1) % axes.size()] ? 1 : 0;
+      }
+      turns[static_cast<size_t>(c)] = std::min(turns[static_cast<size_t>(c)], count);
+    }
+  }
+  return turns;
+}
+
 int CleanUpPolycubeCharts(const Points& x,
   const Triangles& faces,
   const Triangles& adjacency,
@@ -169,11 +224,18 @@ int CleanUpPolycubeCharts(const Points& x,
 
     std::vector<bool> small(static_cast<size_t>(chartCount), false);
     std::vector<bool> bad(static_cast<size_t>(chartCount), false);
+    const std::vector<int> turns = settings.MinBoundaryTurns > 0
+      ? ChartBoundaryTurns(faces, adjacency, charts)
+      : std::vector<int>(static_cast<size_t>(chartCount), std::numeric_limits<int>::max());
     for (int c = 0; c < chartCount; ++c)
     {
       if (shared[static_cast<size_t>(c)].empty())
       {
         continue;
+      }
+      if (turns[static_cast<size_t>(c)] < settings.MinBoundaryTurns)
+      {
+        bad[static_cast<size_t>(c)] = true;
       }
       if (charts.ChartArea[static_cast<size_t>(c)] < settings.MinAreaFraction * totalArea ||
         faceTally[static_cast<size_t>(c)] < settings.MinFaceCount)

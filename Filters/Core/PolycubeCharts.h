@@ -52,12 +52,25 @@ struct PolycubeChartCleanup
   /// then already touch that chart, so the face lies in its plane and the chart boundary loses a
   /// one-face tooth (which would otherwise become a degenerate face on the crease).
   bool RemoveTeeth = true;
+  /// A chart with a boundary loop along which the neighbours' axes change fewer times than
+  /// this cannot be a flat rectilinear polygon (an island inside one chart has 0 changes and
+  /// collapses when flattened; a loop needs at least 4 corners), so it is merged into a
+  /// neighbour whatever its size. 0 turns the rule off.
+  int MinBoundaryTurns = 4;
   /// Bound on the merge passes.
   int MaxPasses = 50;
 };
 
-/// Relabels small charts (when flat enough along the new axis), and charts that touch a chart of
-/// the opposite label along an edge (+X next to -X cannot be flattened), with the label of a
+/// For each chart, the fewest changes of the neighbouring charts' axis along one of its
+/// boundary loops (INT_MAX for a chart without boundary). A flat rectilinear chart has at least
+/// 4 on every loop.
+std::vector<int> ChartBoundaryTurns(const Triangles& faces,
+  const Triangles& adjacency,
+  const PolycubeCharts& charts);
+
+/// Relabels small charts (when flat enough along the new axis), charts that touch a chart of
+/// the opposite label along an edge (+X next to -X cannot be flattened) and charts with a
+/// boundary loop of fewer than MinBoundaryTurns corners, with the label of a
 /// neighbouring chart: the one along whose axis the chart is thinnest, ties broken by the longest
 /// shared boundary; never a label opposite to a neighbour's when avoidable. Returns the number
 /// of relabelled faces.

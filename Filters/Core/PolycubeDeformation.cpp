@@ -217,6 +217,53 @@ bool ShareOne(const std::vector<int>& a, const std::vector<int>& b)
 }
 
 
+/// Gives the faces that the penalised flattening squeezed below `ratio` of their rest area
+/// (projected on their label's direction) the label of a neighbouring face of another label,
+/// growing inwards from the chart boundaries. Returns the number of faces relabelled.
+int RelabelCollapsedFaces(const PolycubeEnergy& energy,
+  const Eigen::VectorXd& x,
+  const Triangles& faces,
+  const Triangles& adjacency,
+  double ratio,
+  std::vector<int>& labels)
+{
+  const int faceCount = static_cast<int>(faces.rows());
+  std::vector<bool> collapsed(static_cast<size_t>(faceCount), false);
+  for (int f = 0; f < faceCount; ++f)
+  {
+    collapsed[static_cast<size_t>(f)] =
+      energy.FaceOrientation(x.data(), f, labels[static_cast<size_t>(f)]) < ratio;
+  }
+  const std::vector<int> original = labels;
+  int relabelled = 0;
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (int f = 0; f < faceCount; ++f)
+    {
+      if (!collapsed[static_cast<size_t>(f)])
+      {
+        continue;
+      }
+      for (int e = 0; e < 3; ++e)
+      {
+        const int g = adjacency(f, e);
+        if (g >= 0 && labels[static_cast<size_t>(g)] != labels[static_cast<size_t>(f)] &&
+          (!collapsed[static_cast<size_t>(g)] ||
+            labels[static_cast<size_t>(g)] != original[static_cast<size_t>(g)]))
+        {
+          labels[static_cast<size_t>(f)] = labels[static_cast<size_t>(g)];
+          collapsed[static_cast<size_t>(f)] = false;
+          ++relabelled;
+          changed = true;
+          break;
+        }
+      }
+    }
+  }
+  return relabelled;
+}
+
 Status CheckInput(const TetMesh& input)
 {
   const Eigen::Index n = input.Vertices.rows();
@@ -405,328 +452,377 @@ Status ComputePolycube(const TetMesh& input,
   cleanup.MinFaceCount = params.MinChartFaceCount;
   out.RelabelledFaceCount =
     CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
-  PolycubeCharts charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
-  for (int pass = 0; pass < 4; ++pass)
+  // Labels that cannot be flattened (a tongue of one chart squeezed between two sides of
+  // another) show up as faces the penalised flattening collapses; they take the neighbouring
+  // chart's label and the flattening starts again from the deformed positions.
+  PolycubeCharts charts;
+  std::vector<double> plane;
+  int chartCount = 0;
+  const int labelAttempts = 1 + std::max(0, params.CollapseRelabelAttempts);
+  for (int labelAttempt = 0; labelAttempt < labelAttempts; ++labelAttempt)
   {
-    // An interior edge with both ends in one chart would lie in the chart's plane; a boundary
-    // edge inside one chart whose ends also share a second chart would lie on the line where
-    // the two planes meet, and its faces would be degenerate.
-    const auto vertexCharts =
-      VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
-    const auto boundaryEdges = BoundaryEdgeSet(topology.BoundaryFaces);
-    std::vector<std::array<int, 2>> edges;
-    for (const auto& e : topology.Edges)
+    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+    for (int pass = 0; pass < 4; ++pass)
     {
-      if (boundaryEdges.count(e) == 0 &&
-        ShareOne(vertexCharts[static_cast<size_t>(e[0])], vertexCharts[static_cast<size_t>(e[1])]))
+      // An interior edge with both ends in one chart would lie in the chart's plane; a boundary
+      // edge inside one chart whose ends also share a second chart would lie on the line where
+      // the two planes meet, and its faces would be degenerate.
+      const auto vertexCharts =
+        VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+      const auto boundaryEdges = BoundaryEdgeSet(topology.BoundaryFaces);
+      std::vector<std::array<int, 2>> edges;
+      for (const auto& e : topology.Edges)
       {
-        edges.push_back(e);
-      }
-    }
-    for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
-    {
-      for (int e = 0; e < 3; ++e)
-      {
-        const Eigen::Index g = adjacency(f, e);
-        if (g <= f ||
-          charts.FaceChart[static_cast<size_t>(f)] != charts.FaceChart[static_cast<size_t>(g)])
+        if (boundaryEdges.count(e) == 0 &&
+          ShareOne(vertexCharts[static_cast<size_t>(e[0])], vertexCharts[static_cast<size_t>(e[1])]))
         {
-          continue;
-        }
-        const int a = topology.BoundaryFaces(f, e);
-        const int b = topology.BoundaryFaces(f, (e + 1) % 3);
-        const auto& ca = vertexCharts[static_cast<size_t>(a)];
-        const auto& cb = vertexCharts[static_cast<size_t>(b)];
-        std::vector<int> common;
-        std::set_intersection(
-          ca.begin(), ca.end(), cb.begin(), cb.end(), std::back_inserter(common));
-        if (common.size() >= 2)
-        {
-          edges.push_back({ std::min(a, b), std::max(a, b) });
+          edges.push_back(e);
         }
       }
-    }
-    if (edges.empty())
-    {
-      break;
-    }
-    const Triangles oldFaces = topology.BoundaryFaces;
-    const int oldCount = mesh.VertexCount();
-    SplitEdges(mesh, edges);
-    ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
-    labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
-    adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
-    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
-    out.SplitEdgeCount += static_cast<int>(edges.size());
-  }
-  {
-    // A tet whose four corners are in one chart (all its edges on the boundary, e.g. two
-    // boundary faces in one chart across a boundary edge): split at its centroid.
-    adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
-    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
-    const auto vertexCharts =
-      VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
-    std::vector<int> tets;
-    for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
-    {
-      std::vector<int> common = vertexCharts[static_cast<size_t>(mesh.Cells(t, 0))];
-      for (int c = 1; c < 4 && !common.empty(); ++c)
+      for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
       {
-        const auto& other = vertexCharts[static_cast<size_t>(mesh.Cells(t, c))];
-        std::vector<int> next;
-        std::set_intersection(
-          common.begin(), common.end(), other.begin(), other.end(), std::back_inserter(next));
-        common.swap(next);
+        for (int e = 0; e < 3; ++e)
+        {
+          const Eigen::Index g = adjacency(f, e);
+          if (g <= f ||
+            charts.FaceChart[static_cast<size_t>(f)] != charts.FaceChart[static_cast<size_t>(g)])
+          {
+            continue;
+          }
+          const int a = topology.BoundaryFaces(f, e);
+          const int b = topology.BoundaryFaces(f, (e + 1) % 3);
+          const auto& ca = vertexCharts[static_cast<size_t>(a)];
+          const auto& cb = vertexCharts[static_cast<size_t>(b)];
+          std::vector<int> common;
+          std::set_intersection(
+            ca.begin(), ca.end(), cb.begin(), cb.end(), std::back_inserter(common));
+          if (common.size() >= 2)
+          {
+            edges.push_back({ std::min(a, b), std::max(a, b) });
+          }
+        }
       }
-      if (!common.empty())
+      if (edges.empty())
       {
-        tets.push_back(static_cast<int>(t));
+        break;
       }
-    }
-    if (!tets.empty())
-    {
       const Triangles oldFaces = topology.BoundaryFaces;
       const int oldCount = mesh.VertexCount();
-      SplitTets(mesh, tets);
+      SplitEdges(mesh, edges);
       ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
       labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
+      adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+      charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+      out.SplitEdgeCount += static_cast<int>(edges.size());
     }
-    out.SplitTetCount = static_cast<int>(tets.size());
-  }
-  for (int& label : labels)
-  {
-    if (label < 0)
     {
-      label = 0; // cannot happen for a manifold boundary; keep the output well formed
-      out.Warnings.push_back("a boundary face lost its label in a split");
-    }
-  }
-  adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
-  charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
-  out.LabelingSeconds = SecondsSince(labelStart);
-  if (!ReportProgress(progress, 0.82))
-  {
-    return Status::Failure("ComputePolycube: aborted");
-  }
-
-  // Chart planes: charts of one axis that share a vertex must share the plane.
-  const int chartCount = charts.Count();
-  std::vector<int> group(static_cast<size_t>(chartCount));
-  std::iota(group.begin(), group.end(), 0);
-  const auto vertexCharts =
-    VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
-  for (const auto& list : vertexCharts)
-  {
-    for (size_t i = 0; i < list.size(); ++i)
-    {
-      for (size_t j = i + 1; j < list.size(); ++j)
+      // A tet whose four corners are in one chart (all its edges on the boundary, e.g. two
+      // boundary faces in one chart across a boundary edge): split at its centroid.
+      adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+      charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+      const auto vertexCharts =
+        VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+      std::vector<int> tets;
+      for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
       {
-        const int a = list[i];
-        const int b = list[j];
-        if (charts.ChartLabel[static_cast<size_t>(a)] / 2 ==
-          charts.ChartLabel[static_cast<size_t>(b)] / 2)
+        std::vector<int> common = vertexCharts[static_cast<size_t>(mesh.Cells(t, 0))];
+        for (int c = 1; c < 4 && !common.empty(); ++c)
         {
-          group[static_cast<size_t>(FindRoot(group, a))] = FindRoot(group, b);
+          const auto& other = vertexCharts[static_cast<size_t>(mesh.Cells(t, c))];
+          std::vector<int> next;
+          std::set_intersection(
+            common.begin(), common.end(), other.begin(), other.end(), std::back_inserter(next));
+          common.swap(next);
+        }
+        if (!common.empty())
+        {
+          tets.push_back(static_cast<int>(t));
+        }
+      }
+      if (!tets.empty())
+      {
+        const Triangles oldFaces = topology.BoundaryFaces;
+        const int oldCount = mesh.VertexCount();
+        SplitTets(mesh, tets);
+        ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+        labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
+      }
+      out.SplitTetCount = static_cast<int>(tets.size());
+    }
+    for (int& label : labels)
+    {
+      if (label < 0)
+      {
+        label = 0; // cannot happen for a manifold boundary; keep the output well formed
+        out.Warnings.push_back("a boundary face lost its label in a split");
+      }
+    }
+    adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+    out.LabelingSeconds = SecondsSince(labelStart);
+    if (!ReportProgress(progress, 0.82))
+    {
+      return Status::Failure("ComputePolycube: aborted");
+    }
+
+    // Chart planes: charts of one axis that share a vertex must share the plane.
+    chartCount = charts.Count();
+    std::vector<int> group(static_cast<size_t>(chartCount));
+    std::iota(group.begin(), group.end(), 0);
+    const auto vertexCharts =
+      VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+    for (const auto& list : vertexCharts)
+    {
+      for (size_t i = 0; i < list.size(); ++i)
+      {
+        for (size_t j = i + 1; j < list.size(); ++j)
+        {
+          const int a = list[i];
+          const int b = list[j];
+          if (charts.ChartLabel[static_cast<size_t>(a)] / 2 ==
+            charts.ChartLabel[static_cast<size_t>(b)] / 2)
+          {
+            group[static_cast<size_t>(FindRoot(group, a))] = FindRoot(group, b);
+          }
         }
       }
     }
-  }
-  std::vector<double> planeSum(static_cast<size_t>(chartCount), 0.0);
-  std::vector<double> planeWeight(static_cast<size_t>(chartCount), 0.0);
-  for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
-  {
-    const int chart = charts.FaceChart[static_cast<size_t>(f)];
-    const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
-    const int root = FindRoot(group, chart);
-    const Eigen::Vector3d p0 = mesh.X.row(topology.BoundaryFaces(f, 0)).transpose();
-    const Eigen::Vector3d p1 = mesh.X.row(topology.BoundaryFaces(f, 1)).transpose();
-    const Eigen::Vector3d p2 = mesh.X.row(topology.BoundaryFaces(f, 2)).transpose();
-    const double area = 0.5 * (p1 - p0).cross(p2 - p0).norm() + 1e-300;
-    planeSum[static_cast<size_t>(root)] += area * (p0(axis) + p1(axis) + p2(axis)) / 3.0;
-    planeWeight[static_cast<size_t>(root)] += area;
-  }
-  std::vector<double> plane(static_cast<size_t>(chartCount));
-  for (int c = 0; c < chartCount; ++c)
-  {
-    const int root = FindRoot(group, c);
-    plane[static_cast<size_t>(c)] =
-      planeSum[static_cast<size_t>(root)] / planeWeight[static_cast<size_t>(root)];
-  }
-  std::map<int, double> anchors; // coordinate 3v+a -> plane
-  for (int v = 0; v < mesh.VertexCount(); ++v)
-  {
-    for (int chart : vertexCharts[static_cast<size_t>(v)])
+    std::vector<double> planeSum(static_cast<size_t>(chartCount), 0.0);
+    std::vector<double> planeWeight(static_cast<size_t>(chartCount), 0.0);
+    for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
     {
+      const int chart = charts.FaceChart[static_cast<size_t>(f)];
       const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
-      anchors[3 * v + axis] = plane[static_cast<size_t>(chart)];
+      const int root = FindRoot(group, chart);
+      const Eigen::Vector3d p0 = mesh.X.row(topology.BoundaryFaces(f, 0)).transpose();
+      const Eigen::Vector3d p1 = mesh.X.row(topology.BoundaryFaces(f, 1)).transpose();
+      const Eigen::Vector3d p2 = mesh.X.row(topology.BoundaryFaces(f, 2)).transpose();
+      const double area = 0.5 * (p1 - p0).cross(p2 - p0).norm() + 1e-300;
+      planeSum[static_cast<size_t>(root)] += area * (p0(axis) + p1(axis) + p2(axis)) / 3.0;
+      planeWeight[static_cast<size_t>(root)] += area;
     }
-  }
-  std::vector<int> anchorIndex;
-  std::vector<double> anchorTarget;
-  for (const auto& entry : anchors)
-  {
-    anchorIndex.push_back(entry.first);
-    anchorTarget.push_back(entry.second);
-  }
-
-  // Flattening: pull the chart coordinates onto their planes with a growing penalty (the line
-  // search keeps every tet positive), then make them exact and relax the rest by ARAP.
-  const auto flattenStart = Clock::now();
-  if (params.Flatten)
-  {
-    PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
-    energy.SetAnchors(anchorIndex, anchorTarget);
-    PolycubeEnergyWeights weights;
-    weights.Barrier = finalBarrier;
-    weights.BarrierThreshold = params.BarrierThreshold;
-    Eigen::VectorXd x = Flat(mesh.X);
-    // Faces that are not folded over their label's direction must not fold while flattening.
-    std::vector<int> guarded(labels);
-    energy.SetFaceLabels(guarded);
-    int unguarded = 0;
-    for (size_t f = 0; f < guarded.size(); ++f)
+    plane.assign(static_cast<size_t>(chartCount), 0.0);
+    for (int c = 0; c < chartCount; ++c)
     {
-      if (!(energy.FaceOrientation(x.data(), static_cast<int>(f)) > 0.0))
+      const int root = FindRoot(group, c);
+      plane[static_cast<size_t>(c)] =
+        planeSum[static_cast<size_t>(root)] / planeWeight[static_cast<size_t>(root)];
+    }
+  std::map<int, double> anchors; // coordinate 3v+a -> plane
+    for (int v = 0; v < mesh.VertexCount(); ++v)
+    {
+      for (int chart : vertexCharts[static_cast<size_t>(v)])
       {
-        guarded[f] = -1;
-        ++unguarded;
+        const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
+        anchors[3 * v + axis] = plane[static_cast<size_t>(chart)];
       }
     }
-    energy.SetFaceLabels(guarded);
-    weights.FaceBarrier = finalBarrier;
-    weights.FaceBarrierThreshold = params.BarrierThreshold;
+    std::vector<int> anchorIndex;
+    std::vector<double> anchorTarget;
+    for (const auto& entry : anchors)
     {
-      const VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
-      PolycubeNewtonSolver solver(energy, reduction);
-      double anchorWeight = 1e3 * std::max(1.0, finalBarrier);
-      for (int round = 0; round < params.FlattenRounds; ++round, anchorWeight *= 10.0)
+      anchorIndex.push_back(entry.first);
+      anchorTarget.push_back(entry.second);
+    }
+
+    // Flattening: pull the chart coordinates onto their planes with a growing penalty (the line
+    // search keeps every tet positive), then make them exact and relax the rest by ARAP.
+    const auto flattenStart = Clock::now();
+    if (params.Flatten)
+    {
+      PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
+      energy.SetAnchors(anchorIndex, anchorTarget);
+      PolycubeEnergyWeights weights;
+      weights.Barrier = finalBarrier;
+      weights.BarrierThreshold = params.BarrierThreshold;
+      Eigen::VectorXd x = Flat(mesh.X);
+      // Faces that are not folded over their label's direction must not fold while flattening.
+      std::vector<int> guarded(labels);
+      energy.SetFaceLabels(guarded);
+      int unguarded = 0;
+      for (size_t f = 0; f < guarded.size(); ++f)
       {
-        weights.Anchor = anchorWeight;
+        if (!(energy.FaceOrientation(x.data(), static_cast<int>(f)) > 0.0))
+        {
+          guarded[f] = -1;
+          ++unguarded;
+        }
+      }
+      energy.SetFaceLabels(guarded);
+      weights.FaceBarrier = finalBarrier;
+      weights.FaceBarrierThreshold = params.BarrierThreshold;
+      // The folded ones are turned over by a penalty that grows with the anchors, and join the
+      // barrier as soon as they face their label's direction.
+      std::vector<int> folded(labels.size(), -1);
+      for (size_t f = 0; f < labels.size(); ++f)
+      {
+        folded[f] = guarded[f] < 0 ? labels[f] : -1;
+      }
+      energy.SetUnfoldFaces(folded);
+      out.InitiallyFoldedFaceCount = unguarded;
+      {
+        const VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+        PolycubeNewtonSolver solver(energy, reduction);
+        double anchorWeight = 1e3 * std::max(1.0, finalBarrier);
+        for (int round = 0; round < params.FlattenRounds; ++round, anchorWeight *= 10.0)
+        {
+          weights.Anchor = anchorWeight;
+          weights.FaceUnfold = unguarded > 0 ? anchorWeight : 0.0;
+          energy.SetWeights(weights);
+          NewtonSettings settings;
+          settings.LinearSolver = solverType;
+          settings.MaxIterations = params.FlattenIterations;
+          settings.StepTolerance = 1e-12;
+          NewtonStats stats;
+          status = solver.Minimize(x, settings, stats);
+          if (!status)
+          {
+            return Status::Failure("ComputePolycube: " + status.Message());
+          }
+          out.Iterations += stats.Iterations;
+          for (size_t f = 0; f < folded.size(); ++f)
+          {
+            if (folded[f] >= 0 && energy.FaceOrientation(x.data(), static_cast<int>(f), folded[f]) > 0.0)
+            {
+              guarded[f] = folded[f];
+              folded[f] = -1;
+              --unguarded;
+            }
+          }
+          energy.SetFaceLabels(guarded);
+          energy.SetUnfoldFaces(folded);
+          if (!ReportProgress(progress, 0.82 + 0.15 * (round + 1) / params.FlattenRounds))
+          {
+            return Status::Failure("ComputePolycube: aborted");
+          }
+          if (stats.Terms.MaxAnchorDeviation < 1e-10 && unguarded == 0)
+          {
+            break;
+          }
+        }
+      }
+      if (labelAttempt + 1 < labelAttempts)
+      {
+        const int collapsed = RelabelCollapsedFaces(energy,
+          x,
+          topology.BoundaryFaces,
+          adjacency,
+          params.CollapseAreaRatio,
+          labels);
+        if (collapsed > 0)
+        {
+          out.CollapseRelabelledFaceCount += collapsed;
+          out.RelabelledFaceCount +=
+            CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
+          out.FlatteningSeconds += SecondsSince(flattenStart);
+          continue; // mesh.X still holds the deformed, unflattened positions
+        }
+      }
+      // Make the planes exact. Where that would invert a tet or fold a chart face (a labelling the
+      // connectivity cannot realise), the vertices of the offending elements keep their penalised
+      // positions instead: every tet stays positive and the few released coordinates stay within
+      // the penalty's tolerance of their planes.
+      std::vector<std::vector<int>> vertexAnchors(static_cast<size_t>(mesh.VertexCount()));
+      for (size_t i = 0; i < anchorIndex.size(); ++i)
+      {
+        vertexAnchors[static_cast<size_t>(anchorIndex[i] / 3)].push_back(static_cast<int>(i));
+      }
+      std::vector<bool> released(anchorIndex.size(), false);
+      Eigen::VectorXd snapped = x;
+      for (size_t i = 0; i < anchorIndex.size(); ++i)
+      {
+        snapped(anchorIndex[i]) = anchorTarget[i];
+      }
+      auto release = [&](int v)
+      {
+        for (int i : vertexAnchors[static_cast<size_t>(v)])
+        {
+          released[static_cast<size_t>(i)] = true;
+          snapped(anchorIndex[static_cast<size_t>(i)]) = x(anchorIndex[static_cast<size_t>(i)]);
+        }
+      };
+      for (int attempt = 0; attempt < 50 && !energy.IsFeasible(snapped.data()); ++attempt)
+      {
+        const Points current = Unflat(snapped);
+        for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+        {
+          if (!(TetSignedVolume(current, mesh.Cells, static_cast<int>(t)) > 0.0))
+          {
+            for (int k = 0; k < 4; ++k)
+            {
+              release(mesh.Cells(t, k));
+            }
+          }
+        }
+        for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+        {
+          if (guarded[static_cast<size_t>(f)] >= 0 &&
+            !(energy.FaceOrientation(snapped.data(), static_cast<int>(f)) > 0.0))
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              release(topology.BoundaryFaces(f, k));
+            }
+          }
+        }
+      }
+      std::vector<int> fixedIndex, freeIndex;
+      std::vector<double> fixedTarget, freeTarget;
+      std::vector<bool> unflattened(static_cast<size_t>(mesh.VertexCount()), false);
+      for (size_t i = 0; i < anchorIndex.size(); ++i)
+      {
+        if (released[i])
+        {
+          freeIndex.push_back(anchorIndex[i]);
+          freeTarget.push_back(anchorTarget[i]);
+          unflattened[static_cast<size_t>(anchorIndex[i] / 3)] = true;
+        }
+        else
+        {
+          fixedIndex.push_back(anchorIndex[i]);
+          fixedTarget.push_back(anchorTarget[i]);
+        }
+      }
+      out.UnflattenedVertexCount =
+        static_cast<int>(std::count(unflattened.begin(), unflattened.end(), true));
+      if (!energy.IsFeasible(snapped.data()))
+      {
+        snapped = x; // cannot happen: releasing everything gives back the penalised positions
+        out.Warnings.push_back("the charts could not be snapped onto their planes");
+      }
+      else
+      {
+        if (out.UnflattenedVertexCount > 0)
+        {
+          std::ostringstream message;
+          message << out.UnflattenedVertexCount
+                  << " vertices stay off their chart planes (within the flattening penalty's "
+                     "tolerance): snapping them would invert a tet or fold a chart face";
+          out.Warnings.push_back(message.str());
+        }
+        // ARAP relaxation with the exact planes hard (variables eliminated), the released
+        // coordinates still held by the penalty.
+        energy.SetAnchors(freeIndex, freeTarget);
         energy.SetWeights(weights);
+        const VariableReduction reduction =
+          VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget);
+        PolycubeNewtonSolver solver(energy, reduction);
         NewtonSettings settings;
         settings.LinearSolver = solverType;
         settings.MaxIterations = params.FlattenIterations;
-        settings.StepTolerance = 1e-12;
         NewtonStats stats;
-        status = solver.Minimize(x, settings, stats);
+        status = solver.Minimize(snapped, settings, stats);
         if (!status)
         {
           return Status::Failure("ComputePolycube: " + status.Message());
         }
         out.Iterations += stats.Iterations;
-        if (!ReportProgress(progress, 0.82 + 0.15 * (round + 1) / params.FlattenRounds))
-        {
-          return Status::Failure("ComputePolycube: aborted");
-        }
-        if (stats.Terms.MaxAnchorDeviation < 1e-10)
-        {
-          break;
-        }
       }
+      mesh.X = Unflat(snapped);
     }
-    // Make the planes exact. Where that would invert a tet or fold a chart face (a labelling the
-    // connectivity cannot realise), the vertices of the offending elements keep their penalised
-    // positions instead: every tet stays positive and the few released coordinates stay within
-    // the penalty's tolerance of their planes.
-    std::vector<std::vector<int>> vertexAnchors(static_cast<size_t>(mesh.VertexCount()));
-    for (size_t i = 0; i < anchorIndex.size(); ++i)
-    {
-      vertexAnchors[static_cast<size_t>(anchorIndex[i] / 3)].push_back(static_cast<int>(i));
-    }
-    std::vector<bool> released(anchorIndex.size(), false);
-    Eigen::VectorXd snapped = x;
-    for (size_t i = 0; i < anchorIndex.size(); ++i)
-    {
-      snapped(anchorIndex[i]) = anchorTarget[i];
-    }
-    auto release = [&](int v)
-    {
-      for (int i : vertexAnchors[static_cast<size_t>(v)])
-      {
-        released[static_cast<size_t>(i)] = true;
-        snapped(anchorIndex[static_cast<size_t>(i)]) = x(anchorIndex[static_cast<size_t>(i)]);
-      }
-    };
-    for (int attempt = 0; attempt < 50 && !energy.IsFeasible(snapped.data()); ++attempt)
-    {
-      const Points current = Unflat(snapped);
-      for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
-      {
-        if (!(TetSignedVolume(current, mesh.Cells, static_cast<int>(t)) > 0.0))
-        {
-          for (int k = 0; k < 4; ++k)
-          {
-            release(mesh.Cells(t, k));
-          }
-        }
-      }
-      for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
-      {
-        if (guarded[static_cast<size_t>(f)] >= 0 &&
-          !(energy.FaceOrientation(snapped.data(), static_cast<int>(f)) > 0.0))
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            release(topology.BoundaryFaces(f, k));
-          }
-        }
-      }
-    }
-    std::vector<int> fixedIndex, freeIndex;
-    std::vector<double> fixedTarget, freeTarget;
-    std::vector<bool> unflattened(static_cast<size_t>(mesh.VertexCount()), false);
-    for (size_t i = 0; i < anchorIndex.size(); ++i)
-    {
-      if (released[i])
-      {
-        freeIndex.push_back(anchorIndex[i]);
-        freeTarget.push_back(anchorTarget[i]);
-        unflattened[static_cast<size_t>(anchorIndex[i] / 3)] = true;
-      }
-      else
-      {
-        fixedIndex.push_back(anchorIndex[i]);
-        fixedTarget.push_back(anchorTarget[i]);
-      }
-    }
-    out.UnflattenedVertexCount =
-      static_cast<int>(std::count(unflattened.begin(), unflattened.end(), true));
-    if (!energy.IsFeasible(snapped.data()))
-    {
-      snapped = x; // cannot happen: releasing everything gives back the penalised positions
-      out.Warnings.push_back("the charts could not be snapped onto their planes");
-    }
-    else
-    {
-      if (out.UnflattenedVertexCount > 0)
-      {
-        std::ostringstream message;
-        message << out.UnflattenedVertexCount
-                << " vertices stay off their chart planes (within the flattening penalty's "
-                   "tolerance): snapping them would invert a tet or fold a chart face";
-        out.Warnings.push_back(message.str());
-      }
-      // ARAP relaxation with the exact planes hard (variables eliminated), the released
-      // coordinates still held by the penalty.
-      energy.SetAnchors(freeIndex, freeTarget);
-      energy.SetWeights(weights);
-      const VariableReduction reduction =
-        VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget);
-      PolycubeNewtonSolver solver(energy, reduction);
-      NewtonSettings settings;
-      settings.LinearSolver = solverType;
-      settings.MaxIterations = params.FlattenIterations;
-      NewtonStats stats;
-      status = solver.Minimize(snapped, settings, stats);
-      if (!status)
-      {
-        return Status::Failure("ComputePolycube: " + status.Message());
-      }
-      out.Iterations += stats.Iterations;
-    }
-    mesh.X = Unflat(snapped);
+    out.FlatteningSeconds += SecondsSince(flattenStart);
+    break;
   }
-  out.FlatteningSeconds = SecondsSince(flattenStart);
 
   // Results in input units.
   out.Positions = FromUnitDiagonal(frame, mesh.X);
@@ -778,6 +874,26 @@ Status ComputePolycube(const TetMesh& input,
         std::abs(out.Positions(topology.BoundaryFaces(f, c), axis) -
           out.ChartPlane[static_cast<size_t>(chart)]));
     }
+  }
+  out.FoldedFaceCount = 0;
+  for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+  {
+    const int label = labels[static_cast<size_t>(f)];
+    const Eigen::RowVector3d p0 = out.Positions.row(topology.BoundaryFaces(f, 0));
+    const Eigen::Vector3d normal = (out.Positions.row(topology.BoundaryFaces(f, 1)) - p0)
+                                     .cross(out.Positions.row(topology.BoundaryFaces(f, 2)) - p0)
+                                     .transpose();
+    if (!((label % 2 == 0 ? 1.0 : -1.0) * normal(label / 2) > 0.0))
+    {
+      ++out.FoldedFaceCount;
+    }
+  }
+  if (out.FoldedFaceCount > 0)
+  {
+    std::ostringstream message;
+    message << out.FoldedFaceCount << " boundary faces (of " << out.InitiallyFoldedFaceCount
+            << " when flattening started) stay folded over their chart's direction";
+    out.Warnings.push_back(message.str());
   }
   out.TotalSeconds = SecondsSince(totalStart);
   ReportProgress(progress, 1.0);

@@ -76,6 +76,12 @@ struct PolycubeParameters
 
   /// Flatten each chart exactly onto its plane (otherwise stop after labelling).
   bool Flatten = true;
+  /// A labelling the mesh cannot flatten (e.g. a tongue of one chart between two sides of
+  /// another, which must collapse to a line) shows up as faces the penalised flattening squeezes
+  /// below CollapseAreaRatio of their rest area. They take a neighbouring chart's label and the
+  /// flattening restarts, at most this many times (0: keep the labels and release the vertices).
+  int CollapseRelabelAttempts = 2;
+  double CollapseAreaRatio = 1e-2;
   /// Flattening: anchor penalty rounds (weight x10 each, from 1e3 times the final barrier
   /// weight) before the planes become hard.
   int FlattenRounds = 8;
@@ -120,6 +126,11 @@ struct PolycubeResult
   /// Vertices left off their chart planes because snapping them would invert a tet or fold a
   /// chart face (a labelling the connectivity cannot realise); 0 means every chart is exact.
   int UnflattenedVertexCount = 0;
+  /// Boundary faces folded over their label's direction when the flattening started (the
+  /// optimisation leaves a few where tiny charts were merged), and at the end (0 on success:
+  /// the hex extraction refuses a folded face).
+  int InitiallyFoldedFaceCount = 0;
+  int FoldedFaceCount = 0;
   Eigen::Matrix3d InitialRotation = Eigen::Matrix3d::Identity(); ///< applied before deforming
   int Rounds = 0;     ///< continuation rounds (0: the input was already a polycube)
   int Iterations = 0; ///< Newton iterations, all phases
@@ -127,6 +138,7 @@ struct PolycubeResult
   int SplitEdgeCount = 0;      ///< edges split after labelling
   int SplitTetCount = 0;       ///< tets split at their centroid after labelling
   int RelabelledFaceCount = 0; ///< faces relabelled by the chart clean-up
+  int CollapseRelabelledFaceCount = 0; ///< faces relabelled because flattening collapsed them
   double RotationSeconds = 0.0;
   double OptimizationSeconds = 0.0;
   double LabelingSeconds = 0.0; ///< labels, clean-up and splits

@@ -327,9 +327,8 @@ PolycubeEnergy::PolycubeEnergy(const Points& rest,
   }
 }
 
-double PolycubeEnergy::FaceOrientation(const double* x, int f) const
+double PolycubeEnergy::FaceOrientation(const double* x, int f, int label) const
 {
-  const int label = this->FaceLabel[static_cast<size_t>(f)];
   const Eigen::Vector3d p0 = Row(x, this->Faces(f, 0));
   const Eigen::Vector3d u =
     0.5 * (Row(x, this->Faces(f, 1)) - p0).cross(Row(x, this->Faces(f, 2)) - p0);
@@ -658,24 +657,28 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
       }
     }
   }
-  if (w.FaceBarrier > 0.0)
+  // Both orientation terms are functions of d_f = s u_axis / A_rest, u = e1 x e2 / 2; phi gives
+  // the term's value and its first and (Gauss-Newton for the penalty) second derivatives in d.
+  auto addOrientationTerm = [&](const std::vector<int>& faceLabels,
+                              double weight,
+                              double& value,
+                              const auto& phi)
   {
-    const double scale = w.FaceBarrier / static_cast<double>(std::max(1, faceCount));
-    for (int f = 0; f < static_cast<int>(this->FaceLabel.size()); ++f)
+    const double scale = weight / static_cast<double>(std::max(1, faceCount));
+    for (int f = 0; f < static_cast<int>(faceLabels.size()); ++f)
     {
-      const int label = this->FaceLabel[static_cast<size_t>(f)];
+      const int label = faceLabels[static_cast<size_t>(f)];
       if (label < 0)
       {
         continue;
       }
       double b = 0.0, db = 0.0, ddb = 0.0;
-      BarrierFunction(this->FaceOrientation(x, f), w.FaceBarrierThreshold, b, db, ddb);
-      terms.FaceBarrier += b / std::max(1, faceCount);
+      phi(this->FaceOrientation(x, f, label), b, db, ddb);
+      value += b / std::max(1, faceCount);
       if (!wantGradient || db == 0.0)
       {
         continue;
       }
-      // d = s u_axis / A_rest: its gradient through u = e1 x e2 / 2.
       Eigen::Vector3d g = Eigen::Vector3d::Zero();
       g(label / 2) = (label % 2 == 0 ? 1.0 : -1.0) / this->FaceRestArea[static_cast<size_t>(f)];
       const Eigen::Vector3d& a1 = e1[static_cast<size_t>(f)];
@@ -702,10 +705,31 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
         }
       }
     }
+  };
+  if (w.FaceBarrier > 0.0)
+  {
+    addOrientationTerm(this->FaceLabel,
+      w.FaceBarrier,
+      terms.FaceBarrier,
+      [&](double d, double& b, double& db, double& ddb)
+      { BarrierFunction(d, w.FaceBarrierThreshold, b, db, ddb); });
+  }
+  if (w.FaceUnfold > 0.0)
+  {
+    addOrientationTerm(this->UnfoldLabel,
+      w.FaceUnfold,
+      terms.FaceUnfold,
+      [&](double d, double& b, double& db, double& ddb)
+      {
+        const double gap = std::max(0.0, w.FaceBarrierThreshold - d);
+        b = gap * gap;
+        db = -2.0 * gap;
+        ddb = gap > 0.0 ? 2.0 : 0.0;
+      });
   }
   terms.Total = w.Arap * terms.Arap + w.Alignment * terms.Alignment +
     w.NormalDifference * terms.Difference + w.Area * terms.Area + w.Barrier * terms.Barrier +
-    w.Anchor * terms.Anchor + w.FaceBarrier * terms.FaceBarrier;
+    w.Anchor * terms.Anchor + w.FaceBarrier * terms.FaceBarrier + w.FaceUnfold * terms.FaceUnfold;
   if (!wantGradient)
   {
     return true;

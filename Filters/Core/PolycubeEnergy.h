@@ -38,6 +38,10 @@ struct PolycubeEnergyWeights
   /// fold over within its chart's plane while the charts are flattened.
   double FaceBarrier = 0.0;
   double FaceBarrierThreshold = 0.1;
+  /// Unfolding penalty (1/#F) sum_f max(0, t - d_f)^2, t = FaceBarrierThreshold, over the faces
+  /// given by SetUnfoldFaces: faces that are folded over their label's direction when the
+  /// flattening starts, so that the barrier cannot hold them yet.
+  double FaceUnfold = 0.0;
 };
 
 /// The value of each term at one configuration.
@@ -51,6 +55,7 @@ struct PolycubeEnergyTerms
   double Barrier = 0.0;            ///< the inversion barrier, unweighted
   double Anchor = 0.0;             ///< sum of squared anchor deviations
   double FaceBarrier = 0.0;        ///< the chart-orientation barrier, unweighted
+  double FaceUnfold = 0.0;         ///< the unfolding penalty, unweighted
   double MaxAnchorDeviation = 0.0; ///< largest |x_i - target_i|
   double BoundaryArea = 0.0;       ///< current boundary area A
   double Total = 0.0;              ///< the weighted sum
@@ -104,6 +109,10 @@ public:
   /// Faces (#F, labels 0..5, or -1) whose projected orientation the FaceBarrier protects.
   void SetFaceLabels(const std::vector<int>& labels) { this->FaceLabel = labels; }
 
+  /// Faces (#F, labels 0..5, or -1) that the FaceUnfold penalty turns towards their label's
+  /// direction. They do not count in IsFeasible.
+  void SetUnfoldFaces(const std::vector<int>& labels) { this->UnfoldLabel = labels; }
+
   /// Smallest signed tet volume of x divided by its rest volume (> 0 when no tet is inverted or
   /// flat).
   double MinVolumeRatio(const double* x) const;
@@ -113,7 +122,13 @@ public:
   bool IsFeasible(const double* x) const;
 
   /// Projected area ratio d_f of a labelled face (see FaceBarrier).
-  double FaceOrientation(const double* x, int face) const;
+  double FaceOrientation(const double* x, int face) const
+  {
+    return this->FaceOrientation(x, face, this->FaceLabel[static_cast<size_t>(face)]);
+  }
+
+  /// The face's area projected on the direction of `label` over its rest area.
+  double FaceOrientation(const double* x, int face, int label) const;
 
   /// Energy terms at x. Returns false (terms undefined) when a tet is not positive.
   bool Evaluate(const double* x, PolycubeEnergyTerms& terms) const;
@@ -166,6 +181,7 @@ private:
   std::vector<std::array<int, 9>> FacePairs;
   std::vector<double> ArapHessianValues; ///< value array of the constant ARAP Hessian (weight 1)
   std::vector<int> FaceLabel;
+  std::vector<int> UnfoldLabel;
   std::vector<double> FaceRestArea;
   std::vector<int> AnchorIndex;
   std::vector<double> AnchorTarget;

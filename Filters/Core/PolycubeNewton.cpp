@@ -277,6 +277,40 @@ VariableReduction VariableReduction::FixCoordinates(int vertexCount,
   return reduction;
 }
 
+VariableReduction VariableReduction::ShareCoordinates(int vertexCount,
+  const std::vector<int>& coordinateGroup,
+  int groupCount)
+{
+  VariableReduction reduction;
+  const int n = 3 * vertexCount;
+  reduction.Offset.setZero(n);
+  std::vector<int> column(static_cast<size_t>(n), -1);
+  for (int i = 0; i < n; ++i)
+  {
+    if (coordinateGroup[static_cast<size_t>(i)] < 0)
+    {
+      column[static_cast<size_t>(i)] = static_cast<int>(reduction.VariableAxis.size());
+      reduction.VariableAxis.push_back(i % 3);
+    }
+  }
+  const int ungrouped = static_cast<int>(reduction.VariableAxis.size());
+  reduction.VariableAxis.resize(static_cast<size_t>(ungrouped + groupCount), 0);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int i = 0; i < n; ++i)
+  {
+    const int group = coordinateGroup[static_cast<size_t>(i)];
+    if (group >= 0)
+    {
+      column[static_cast<size_t>(i)] = ungrouped + group;
+      reduction.VariableAxis[static_cast<size_t>(ungrouped + group)] = i % 3;
+    }
+    triplets.emplace_back(i, column[static_cast<size_t>(i)], 1.0);
+  }
+  reduction.B.resize(n, ungrouped + groupCount);
+  reduction.B.setFromTriplets(triplets.begin(), triplets.end());
+  return reduction;
+}
+
 struct PolycubeNewtonSolver::Factorizations
 {
   SparseMatrix Bt;

@@ -52,6 +52,13 @@ struct VariableReduction
   static VariableReduction FixCoordinates(int vertexCount,
     const std::vector<int>& fixed,
     const std::vector<double>& values);
+
+  /// Coordinates with the same group (coordinateGroup[3v+a] >= 0) are one variable, placed after
+  /// the ungrouped coordinates (group g is variable #ungrouped + g); the others are their own
+  /// variable. E.g. every coordinate on one chart plane is the plane's value.
+  static VariableReduction ShareCoordinates(int vertexCount,
+    const std::vector<int>& coordinateGroup,
+    int groupCount);
 };
 
 /// Settings of one call of PolycubeNewtonSolver::Minimize.

@@ -48,6 +48,23 @@ int main(int argc, char* argv[])
     static_cast<long>(mesh.Cells.rows()));
 
   PolycubeParameters params;
+  // Experiments without rebuilding: PCH_<NAME>=value overrides a few settings.
+  if (const char* value = std::getenv("PCH_NORMAL_DIFFERENCE_WEIGHT"))
+  {
+    params.NormalDifferenceWeight = std::atof(value);
+  }
+  if (const char* value = std::getenv("PCH_FLATTEN_ROUNDS"))
+  {
+    params.FlattenRounds = std::atoi(value);
+  }
+  if (const char* value = std::getenv("PCH_FLATTEN_ITERATIONS"))
+  {
+    params.FlattenIterations = std::atoi(value);
+  }
+  if (const char* value = std::getenv("PCH_COLLAPSE_RELABEL_ATTEMPTS"))
+  {
+    params.CollapseRelabelAttempts = std::atoi(value);
+  }
   PolycubeResult result;
   std::vector<double> total, rotation, optimization, labeling, flattening;
   for (int run = 0; run < runs; ++run)
@@ -90,9 +107,12 @@ int main(int argc, char* argv[])
     result.SplitTetCount,
     static_cast<long>(result.Positions.rows()),
     static_cast<long>(result.Cells.rows()));
-  std::printf("vertices off their chart plane %d, max plane deviation %.3g (input units)\n",
+  std::printf("vertices off their chart plane %d, max plane deviation %.3g (input units), "
+              "folded faces %d (%d before flattening)\n",
     result.UnflattenedVertexCount,
-    result.MaxPlaneDeviation);
+    result.MaxPlaneDeviation,
+    result.FoldedFaceCount,
+    result.InitiallyFoldedFaceCount);
   for (const auto& warning : result.Warnings)
   {
     std::printf("warning: %s\n", warning.c_str());
