@@ -144,6 +144,11 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     return 0;
   }
 
+  for (const std::string& warning : result.Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+
   // 4. Attach the outputs: quality through vtkMeshQuality, distances to the input boundary.
   auto hexes = polycubehex::ToUnstructuredGrid(result.Mesh);
   vtkSmartPointer<vtkUnstructuredGrid> reference;
@@ -168,6 +173,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   }
   polycubehex::SetFieldValue<vtkIntArray>(fields, "PaddingHexCount", result.PaddingHexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "LatticeScale", result.LatticeScale);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "RoundingInvertedTetCount", result.RoundingInvertedTetCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMinBeforeSmoothing", result.ScaledJacobianMinBeforeSmoothing);
   polycubehex::SetFieldValue<vtkDoubleArray>(

@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include <string>
 #include <vector>
 
 namespace polycubehex
@@ -55,9 +56,10 @@ struct HexExtractionParameters
   /// Smallest tet volume ratio (rounded over original polycube) the rounding accepts (default
   /// 1e-4, in (0, 1)).
   double MinimumVolumeRatio = 1e-4;
-  /// Scales tried when rounding fails, 1 to 7 (default 5): the target scale, then +-3 %, +-6 %
-  /// (+-10 % for 6 and 7). Where the planes fall between integers decides whether greedy
-  /// rounding can keep every tet positive.
+  /// Scales tried when rounding fails, 1 to 7 (default 5): the target scale, then +-1 %, +-2 %
+  /// (+-3 % for 6 and 7), so that the hex count stays within 10 % of the target. Where the
+  /// planes fall between integers decides whether greedy rounding can keep every tet positive
+  /// (1 % of a 30-unit model moves a plane by 0.3).
   int RoundingAttempts = 5;
 };
 
@@ -86,6 +88,11 @@ struct HexExtractionResult
   int PlaneCount = 0;
   int RoundingFallbackCount = 0; ///< planes not rounded to their nearest integer
   int RoundingAttempts = 0;      ///< scales tried (1 when the target scale worked)
+  /// Tets left inverted by a best-effort rounding (IntegerRoundingParameters::
+  /// AcceptInvertedTets), 0 normally.
+  int RoundingInvertedTetCount = 0;
+  /// What the user should know about a mesh that was made anyway (shown as VTK warnings).
+  std::vector<std::string> Warnings;
   double MaxPlaneShift = 0.0;    ///< largest rounding move of a plane, lattice units
   double RoundingMinVolumeRatio = 0.0;
   double ScaledJacobianMinBeforeSmoothing = 0.0;

@@ -1280,6 +1280,7 @@ Status roundPolycubePlanes(const Points& rest,
   result.FallbackCount = 0;
   result.CarefulPath = false;
   result.Relaxed = false;
+  result.BestEffort = false;
 
   // Start from the optimum with the separations (the reference planes when the charts are flat
   // and every separated pair is at least one unit apart).
@@ -1335,6 +1336,9 @@ Status roundPolycubePlanes(const Points& rest,
       result.Relaxed = true;
     }
   }
+  const Eigen::VectorXd fastPlanes = planes;
+  const Points fastPositions = result.Positions;
+  const double fastRatio = result.MinVolumeRatio;
   if (!result.Relaxed && !(result.MinVolumeRatio >= params.MinimumVolumeRatio))
   {
     // Careful path: each candidate must keep the re-solved polycube positive.
@@ -1348,17 +1352,37 @@ Status roundPolycubePlanes(const Points& rest,
       planes,
       result.FallbackCount,
       [&progress](double p) { return ReportProgress(progress, 0.3 + 0.7 * p); });
-    if (!status)
+    if (!status && status.Message().find("aborted") != std::string::npos)
     {
       return status;
     }
-    if (!finish(planes))
+    if (!status || !finish(planes))
     {
-      std::ostringstream message;
-      message << "integer rounding failed: the rounded polycube keeps a tet at volume ratio "
-              << result.MinVolumeRatio << " after untangling; increase the resolution";
-      return Status::Failure(message.str());
+      if (!params.AcceptInvertedTets)
+      {
+        if (status)
+        {
+          std::ostringstream message;
+          message << "integer rounding failed: the rounded polycube keeps a tet at volume ratio "
+                  << result.MinVolumeRatio << " after untangling; increase the resolution";
+          return Status::Failure(message.str());
+        }
+        return status;
+      }
+      // Best effort: the first rounding, untangled as far as it went. The caller reports the
+      // inverted tets; the hex mesh around them is likely inverted too.
+      planes = fastPlanes;
+      result.Positions = fastPositions;
+      result.MinVolumeRatio = fastRatio;
+      result.BestEffort = true;
+      result.BestEffortReason = status ? "a tet stays below the minimum volume ratio after untangling"
+                                       : status.Message();
     }
+  }
+  result.InvertedTetCount = 0;
+  for (int t = 0; t < static_cast<int>(cells.rows()); ++t)
+  {
+    result.InvertedTetCount += SignedVolume(result.Positions, cells, t) > 0.0 ? 0 : 1;
   }
   result.PlanesAfter = planes;
   result.MaxPlaneShift =

@@ -32,6 +32,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace polycubehex
@@ -158,6 +159,11 @@ struct IntegerRoundingParameters
   /// After each re-solve, tets whose volume ratio is below this are untangled (default 0.05,
   /// in [0, 1); 0 turns it off).
   double UntangleTarget = 0.05;
+  /// When no path keeps every tet above MinimumVolumeRatio, return the first rounding as it is
+  /// (BestEffort, with its inverted tets counted) instead of failing (default on). The planes the
+  /// deformation could not realise (a chart squeezed between planes it got too close) leave a
+  /// few such tets; a mesh with a few bad hexes and a warning serves better than none.
+  bool AcceptInvertedTets = true;
 };
 
 /// What roundPolycubePlanes produced.
@@ -177,6 +183,10 @@ struct IntegerRoundingResult
   /// (PolycubePlaneRelaxation.h) because the linear re-solve and untangling left a tet below
   /// MinimumVolumeRatio.
   bool Relaxed = false;
+  /// True when AcceptInvertedTets returned the first rounding with tets below the minimum.
+  bool BestEffort = false;
+  std::string BestEffortReason;
+  int InvertedTetCount = 0; ///< non-positive tets in Positions (0 unless BestEffort)
 };
 
 /// Rounds every chart plane of `reference` to an integer greedily and re-solves the vertices.

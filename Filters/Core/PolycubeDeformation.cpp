@@ -264,6 +264,57 @@ int RelabelCollapsedFaces(const PolycubeEnergy& energy,
   return relabelled;
 }
 
+/// Fang et al. §4.1: the map whose gradient best fits the frame field (eq. 7, the Poisson
+/// reconstruction), here minimised with the inversion barrier so that the start of the l1 stage
+/// keeps every tet positive. It starts from the rest shape turned by the mean frame rotation.
+Status FrameGuidedStart(WorkMesh& mesh,
+  const TetTopology& topology,
+  const std::vector<Eigen::Matrix3d>& tetFrames,
+  const PolycubeParameters& params,
+  PolycubeResult& out)
+{
+  std::vector<Eigen::Matrix3d> targets(static_cast<size_t>(mesh.Cells.rows()));
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+  {
+    const Eigen::Matrix3d& frame = tetFrames[static_cast<size_t>(mesh.ParentTet[static_cast<size_t>(t)])];
+    if (!frame.allFinite() || std::abs(frame.determinant() - 1.0) > 1e-3)
+    {
+      return Status::Failure("ComputePolycube: the frame of tet " +
+        std::to_string(mesh.ParentTet[static_cast<size_t>(t)]) + " is not a rotation");
+    }
+    targets[static_cast<size_t>(t)] = frame;
+    sum += TetSignedVolume(mesh.Rest, mesh.Cells, static_cast<int>(t)) * frame;
+  }
+  Eigen::Matrix3d mean;
+  Eigen::Vector3d sigma;
+  PolarRotation(sum, mean, sigma);
+  out.InitialRotation = mean;
+  Eigen::VectorXd x = Flat(mesh.Rest * mean.transpose());
+
+  PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
+  energy.SetTargetRotations(targets);
+  PolycubeEnergyWeights weights;
+  weights.Barrier = params.BarrierWeight;
+  weights.BarrierThreshold = params.BarrierThreshold;
+  energy.SetWeights(weights);
+  const VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+  PolycubeNewtonSolver solver(energy, reduction);
+  NewtonSettings settings;
+  settings.MaxIterations = params.FrameGuidedIterations;
+  settings.RelativeDecrease = 1e-4;
+  NewtonStats stats;
+  const Status status = solver.Minimize(x, settings, stats);
+  if (!status)
+  {
+    return Status::Failure("ComputePolycube: " + status.Message());
+  }
+  out.Iterations += stats.Iterations;
+  out.FrameFitResidual = stats.Terms.Arap;
+  mesh.X = Unflat(x);
+  return Status::Success();
+}
+
 Status CheckInput(const TetMesh& input)
 {
   const Eigen::Index n = input.Vertices.rows();
@@ -299,7 +350,8 @@ Status CheckInput(const TetMesh& input)
 Status ComputePolycube(const TetMesh& input,
   const PolycubeParameters& params,
   PolycubeResult& out,
-  const Progress& progress)
+  const Progress& progress,
+  const std::vector<Eigen::Matrix3d>& tetFrames)
 {
   const auto totalStart = Clock::now();
   out = PolycubeResult();
@@ -307,6 +359,11 @@ Status ComputePolycube(const TetMesh& input,
   if (!status)
   {
     return status;
+  }
+  if (!tetFrames.empty() && static_cast<Eigen::Index>(tetFrames.size()) != input.Cells.rows())
+  {
+    return Status::Failure("ComputePolycube: " + std::to_string(tetFrames.size()) +
+      " frames for " + std::to_string(input.Cells.rows()) + " tets");
   }
 
   // Normalised working copy (DESIGN.md "Scale").
@@ -364,9 +421,18 @@ Status ComputePolycube(const TetMesh& input,
     out.PresplitEdgeCount = static_cast<int>(edges.size());
   }
 
-  // Initial rotation.
+  // Initial rotation, or the frame-guided start.
   const auto rotationStart = Clock::now();
-  if (params.AlignInitialRotation)
+  const bool frameGuided = !tetFrames.empty();
+  if (frameGuided)
+  {
+    status = FrameGuidedStart(mesh, topology, tetFrames, params, out);
+    if (!status)
+    {
+      return status;
+    }
+  }
+  else if (params.AlignInitialRotation)
   {
     out.InitialRotation = ComputeAxisAligningRotation(mesh.Rest, topology.BoundaryFaces);
     mesh.X = mesh.Rest * out.InitialRotation.transpose();

@@ -76,6 +76,8 @@ struct PolycubeParameters
 
   /// Flatten each chart exactly onto its plane (otherwise stop after labelling).
   bool Flatten = true;
+  /// FrameField guidance: Newton iterations of the frame fit (eq. 7) before the l1 stage.
+  int FrameGuidedIterations = 30;
   /// A labelling the mesh cannot flatten (e.g. a tongue of one chart between two sides of
   /// another, which must collapse to a line) shows up as faces the penalised flattening squeezes
   /// below CollapseAreaRatio of their rest area. They take a neighbouring chart's label and the
@@ -131,7 +133,10 @@ struct PolycubeResult
   /// the hex extraction refuses a folded face).
   int InitiallyFoldedFaceCount = 0;
   int FoldedFaceCount = 0;
-  Eigen::Matrix3d InitialRotation = Eigen::Matrix3d::Identity(); ///< applied before deforming
+  /// Applied before deforming: the l1-optimal rotation, or with frames the mean frame rotation.
+  Eigen::Matrix3d InitialRotation = Eigen::Matrix3d::Identity();
+  /// With frames: sum_t V_t / V ||J_t - R_t||^2 after the frame fit (0 = integrable field).
+  double FrameFitResidual = 0.0;
   int Rounds = 0;     ///< continuation rounds (0: the input was already a polycube)
   int Iterations = 0; ///< Newton iterations, all phases
   int PresplitEdgeCount = 0;
@@ -154,9 +159,16 @@ struct PolycubeResult
 /// @param progress  fraction done, return false to abort
 /// Fails on an empty mesh, an index out of range, a non-finite coordinate, a non-positive tet,
 /// a face shared by more than two tets, or an abort.
+/// @param tetFrames #T rotations R_t (row a = frame axis a, input coordinates) of a frame field
+///                  without singularities (FrameFieldResult::Frames), or empty for the Uniform
+///                  guidance. With frames, the l1 stage starts from the map whose gradient best
+///                  fits them (§4.1, eq. 7) instead of the input rotated. Cut transitions are not
+///                  taken here: the fit runs on the uncut mesh, so frames must agree across cuts
+///                  (identity transitions), and the cut translations are zero.
 Status ComputePolycube(const TetMesh& input,
   const PolycubeParameters& params,
   PolycubeResult& out,
-  const Progress& progress = {});
+  const Progress& progress = {},
+  const std::vector<Eigen::Matrix3d>& tetFrames = {});
 
 } // namespace polycubehex

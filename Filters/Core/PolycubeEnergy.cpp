@@ -468,9 +468,17 @@ void PolycubeEnergy::ArapTerm(const double* x,
         const Eigen::Matrix3d j = ds * g;
         const double c = this->TetWeight[static_cast<size_t>(t)];
         Eigen::Matrix3d r;
-        Eigen::Vector3d sigma;
-        FastPolar(j, r, sigma);
-        arapValue[static_cast<size_t>(t)] = c * (sigma.array() - 1.0).square().sum();
+        if (this->TargetRotation.empty())
+        {
+          Eigen::Vector3d sigma;
+          FastPolar(j, r, sigma);
+          arapValue[static_cast<size_t>(t)] = c * (sigma.array() - 1.0).square().sum();
+        }
+        else
+        {
+          r = this->TargetRotation[static_cast<size_t>(t)];
+          arapValue[static_cast<size_t>(t)] = c * (j - r).squaredNorm();
+        }
         double b = 0.0, db = 0.0, ddb = 0.0;
         if (wBarrier > 0.0)
         {

@@ -106,6 +106,14 @@ public:
   }
   const PolycubeEnergyWeights& GetWeights() const { return this->Weights; }
 
+  /// Per-tet target rotations (#T, or empty): when set, the Arap term becomes
+  /// sum_t V_t / V ||J_t - R_t||^2, the least-squares (Poisson) fit of the deformation gradient
+  /// to a frame field (Fang et al. eq. 7), instead of the distance to the nearest rotation.
+  void SetTargetRotations(const std::vector<Eigen::Matrix3d>& rotations)
+  {
+    this->TargetRotation = rotations;
+  }
+
   /// Faces (#F, labels 0..5, or -1) whose projected orientation the FaceBarrier protects.
   void SetFaceLabels(const std::vector<int>& labels) { this->FaceLabel = labels; }
 
@@ -181,6 +189,7 @@ private:
   std::vector<std::array<int, 9>> FacePairs;
   std::vector<double> ArapHessianValues; ///< value array of the constant ARAP Hessian (weight 1)
   std::vector<int> FaceLabel;
+  std::vector<Eigen::Matrix3d> TargetRotation;
   std::vector<int> UnfoldLabel;
   std::vector<double> FaceRestArea;
   std::vector<int> AnchorIndex;

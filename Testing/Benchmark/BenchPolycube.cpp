@@ -7,6 +7,7 @@
 //
 // With an output path, the polycube of the last run is written as MEDIT (tets and boundary
 // triangles).
+#include "FrameField.h"
 #include "MeditFormat.h"
 #include "PolycubeDeformation.h"
 
@@ -65,11 +66,33 @@ int main(int argc, char* argv[])
   {
     params.CollapseRelabelAttempts = std::atoi(value);
   }
+  // PCH_FRAMES=1: FrameField guidance with the frame field of the uncut mesh.
+  std::vector<Eigen::Matrix3d> frames;
+  if (std::getenv("PCH_FRAMES"))
+  {
+    FrameFieldResult field;
+    const auto frameStart = std::chrono::steady_clock::now();
+    const Status computed = ComputeFrameField(mesh, CutFaces(), FrameFieldParameters(), field);
+    if (!computed)
+    {
+      std::fprintf(stderr, "%s\n", computed.Message().c_str());
+      return 1;
+    }
+    for (Eigen::Index t = 0; t < field.Frames.rows(); ++t)
+    {
+      frames.push_back(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
+        field.Frames.row(t).data()));
+    }
+    std::printf("frame field: %.2f s, %d singular edges, alignment %.2f deg\n",
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count(),
+      field.SingularEdgeCount,
+      field.BoundaryAlignmentError);
+  }
   PolycubeResult result;
   std::vector<double> total, rotation, optimization, labeling, flattening;
   for (int run = 0; run < runs; ++run)
   {
-    const Status status = ComputePolycube(mesh, params, result);
+    const Status status = ComputePolycube(mesh, params, result, {}, frames);
     if (!status)
     {
       std::fprintf(stderr, "%s\n", status.Message().c_str());
@@ -107,6 +130,10 @@ int main(int argc, char* argv[])
     result.SplitTetCount,
     static_cast<long>(result.Positions.rows()),
     static_cast<long>(result.Cells.rows()));
+  if (!frames.empty())
+  {
+    std::printf("frame fit residual %.4g\n", result.FrameFitResidual);
+  }
   std::printf("vertices off their chart plane %d, max plane deviation %.3g (input units), "
               "folded faces %d (%d before flattening)\n",
     result.UnflattenedVertexCount,

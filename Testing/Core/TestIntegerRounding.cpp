@@ -370,7 +370,20 @@ void TestRounding()
   IntegerRoundingParameters strict;
   strict.CandidateCount = 1;
   strict.MinimumVolumeRatio = 0.9;
+  strict.AcceptInvertedTets = false;
   Round(thick, charts, strict, false);
+  // By default the first rounding comes back as a best effort, its shortfall reported.
+  {
+    strict.AcceptInvertedTets = true;
+    IntegerRoundingResult bestEffort;
+    PCH_CHECK(roundPolycubePlanes(
+      thick.Positions, thick.Positions, thick.Cells, charts, strict, bestEffort));
+    PCH_CHECK(bestEffort.BestEffort);
+    PCH_CHECK(bestEffort.MinVolumeRatio < strict.MinimumVolumeRatio);
+    PCH_CHECK(bestEffort.InvertedTetCount == 0);
+    PCH_CHECK(AllIntegers(bestEffort.PlanesAfter));
+    strict.AcceptInvertedTets = false;
+  }
   strict.CandidateCount = 2; // the next integer (2) expands instead
   r = Round(thick, charts, strict);
   PCH_CHECK(r.FallbackCount == 1);
