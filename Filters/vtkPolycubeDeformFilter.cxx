@@ -7,6 +7,7 @@
 #include "PolycubeHexConversion.h"
 
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -20,6 +21,11 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkPolycubeDeformFilter);
 
@@ -52,6 +58,47 @@ int vtkPolycubeDeformFilter::FillOutputPortInformation(int port, vtkInformation*
   return 1;
 }
 
+namespace
+{
+/// The input's frames for FrameField guidance, or false with what is missing in `problem`.
+bool ReadFrames(
+  vtkUnstructuredGrid* input, std::vector<Eigen::Matrix3d>& frames, std::string& problem)
+{
+  frames.clear();
+  vtkDataArray* array = input ? input->GetCellData()->GetArray(names::Frame) : nullptr;
+  if (!array || array->GetNumberOfComponents() != 9)
+  {
+    problem = "the cell array 'Frame' (9 components, row a = frame axis a) of vtkFrameFieldFilter "
+              "on its input";
+    return false;
+  }
+  // The frame fit runs on the uncut mesh: frames must agree across every cut.
+  if (vtkDataArray* transitions = input->GetFieldData()->GetArray(names::CutTransitions))
+  {
+    for (vtkIdType c = 0; c < transitions->GetNumberOfTuples(); ++c)
+    {
+      for (int k = 0; k < 9 && transitions->GetNumberOfComponents() == 9; ++k)
+      {
+        if (transitions->GetComponent(c, k) != (k % 4 == 0 ? 1.0 : 0.0))
+        {
+          problem = "every cut transition to be the identity (cut " + std::to_string(c) +
+            " rotates the frames; the closed-form join across such cuts is not built yet)";
+          return false;
+        }
+      }
+    }
+  }
+  frames.resize(static_cast<size_t>(array->GetNumberOfTuples()));
+  double row[9];
+  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+  {
+    array->GetTuple(t, row);
+    frames[static_cast<size_t>(t)] = Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(row);
+  }
+  return true;
+}
+} // namespace
+
 int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -61,12 +108,31 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
 
-  // 2. Check it.
+  // 2. Check it, and choose the guidance.
+  std::vector<Eigen::Matrix3d> frames;
+  std::string guidanceProblem;
+  const bool hasFrames = ReadFrames(input, frames, guidanceProblem);
+  bool frameGuided = false;
   if (this->Guidance == FRAME_FIELD)
   {
-    vtkErrorMacro(<< "Guidance FrameField (the closed-form polycube) is not available yet; "
-                     "use Uniform (the l1-polycube baseline) or Automatic.");
-    return 0;
+    if (!hasFrames)
+    {
+      vtkErrorMacro(<< "Guidance FrameField needs " << guidanceProblem);
+      return 0;
+    }
+    frameGuided = true;
+  }
+  else if (this->Guidance == AUTOMATIC)
+  {
+    frameGuided = hasFrames;
+    if (!hasFrames && input->GetCellData()->GetArray(names::Frame))
+    {
+      vtkWarningMacro(<< "Automatic guidance uses Uniform: FrameField needs " << guidanceProblem);
+    }
+  }
+  if (!frameGuided)
+  {
+    frames.clear();
   }
   polycubehex::TetMesh mesh;
   std::string why;
@@ -94,7 +160,8 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     return !this->CheckAbort();
   };
   polycubehex::PolycubeResult result;
-  const polycubehex::Status status = polycubehex::ComputePolycube(mesh, params, result, progress);
+  const polycubehex::Status status =
+    polycubehex::ComputePolycube(mesh, params, result, progress, frames);
   if (!status)
   {
     vtkErrorMacro(<< "Polycube deformation failed: " << status.Message());
@@ -162,7 +229,12 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(fields, names::CornerCount, result.CornerCount);
   polycubehex::SetFieldValue<vtkIntArray>(fields, names::InvertedTetCount, result.InvertedTetCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, names::PolycubeResidual, result.Residual);
-  polycubehex::SetFieldValue<vtkStringArray>(fields, names::Guidance, std::string("Uniform"));
+  polycubehex::SetFieldValue<vtkStringArray>(
+    fields, names::Guidance, std::string(frameGuided ? "FrameField" : "Uniform"));
+  if (frameGuided)
+  {
+    polycubehex::SetFieldValue<vtkDoubleArray>(fields, "FrameFitResidual", result.FrameFitResidual);
+  }
   polycubehex::SetFieldValue<vtkIntArray>(fields, "ChartCount", result.ChartCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
   vtkNew<vtkDoubleArray> translations; // no cuts in uniform guidance: zero tuples

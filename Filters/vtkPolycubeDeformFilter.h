@@ -10,9 +10,13 @@
  * cleaned up, tets that would be forced flat are split, and each chart is flattened exactly
  * onto its plane with every tet kept positive.
  *
- * Guidance: Uniform is the l1-polycube baseline (no frame field, no cuts). FrameField (the
- * paper's closed-form guidance by a frame field and cut transitions) is not available yet and
- * is refused with an error; Automatic (the default) uses Uniform until it is.
+ * Guidance: Uniform is the l1-polycube baseline (no frame field, no cuts). FrameField starts
+ * the l1 stage from the map whose gradient best fits the input's `Frame` cell array (the output
+ * of vtkFrameFieldFilter; the paper's eq. 7, solved with an inversion barrier). It runs on the
+ * uncut mesh, so every cut transition must be the identity (genus 0, or cuts the field crosses
+ * unrotated, as on rockerarm); a rotating transition is refused with an error, because the
+ * closed-form join across cuts is not built yet. Automatic (the default) uses FrameField when
+ * the input allows it and Uniform otherwise.
  *
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
@@ -40,7 +44,8 @@ public:
   };
 
   ///@{
-  /// What guides the polycube. Default AUTOMATIC (today: Uniform). See the class comment.
+  /// What guides the polycube. Default AUTOMATIC (FrameField when the input has identity-only
+  /// frames, else Uniform). See the class comment.
   vtkSetClampMacro(Guidance, int, AUTOMATIC, UNIFORM);
   vtkGetMacro(Guidance, int);
   ///@}

@@ -244,6 +244,65 @@ void TestRotatedCube()
   }
 }
 
+/// FrameField guidance: frames that undo a rotation make the frame fit an axis-aligned cube at
+/// once (no l1 round needed); frames of the wrong count or not rotations are refused.
+void TestFrameGuidedCube()
+{
+  TetMesh cube = MakeCube(4);
+  const Eigen::Matrix3d rotation =
+    Eigen::AngleAxisd(25.0 * Pi / 180.0, Eigen::Vector3d(3.0, -1.0, 2.0).normalized())
+      .toRotationMatrix();
+  cube.Vertices = cube.Vertices * rotation.transpose();
+  // R_t maps the input to the polycube: the inverse of the rotation, in every tet.
+  const std::vector<Eigen::Matrix3d> frames(
+    static_cast<size_t>(cube.Cells.rows()), rotation.transpose());
+  PolycubeParameters params;
+  PolycubeResult r;
+  const Status status = ComputePolycube(cube, params, r, {}, frames);
+  PCH_CHECK(status.Ok());
+  if (!status)
+  {
+    std::cerr << status.Message() << std::endl;
+    return;
+  }
+  CheckValidPolycube(r, "frame-guided cube");
+  PCH_CHECK(r.FrameFitResidual < 1e-12);
+  PCH_CHECK(r.Rounds == 0);
+  PCH_CHECK(r.Residual < 1e-9);
+  PCH_CHECK(r.ChartCount == 6);
+  PCH_CHECK(r.CornerCount == 8);
+  PCH_CHECK((r.InitialRotation - rotation.transpose()).norm() < 1e-9);
+  PCH_CHECK_NEAR(
+    AreaWeightedL1Norm(r.Positions, r.BoundaryFaces, Eigen::Matrix3d::Identity()), 1.0, 1e-9);
+
+  // A frame field that twists the cube by 90 degrees from bottom to top: the fit cannot follow
+  // it exactly, but every tet stays positive and the result is still a valid polycube.
+  std::vector<Eigen::Matrix3d> twisted(frames.size());
+  for (Eigen::Index t = 0; t < cube.Cells.rows(); ++t)
+  {
+    double z = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      z += MakeCube(4).Vertices(cube.Cells(t, k), 2) / 4.0;
+    }
+    twisted[static_cast<size_t>(t)] =
+      Eigen::AngleAxisd(0.25 * Pi * z, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+      rotation.transpose();
+  }
+  PolycubeResult twistedResult;
+  PCH_CHECK(ComputePolycube(cube, params, twistedResult, {}, twisted).Ok());
+  CheckValidPolycube(twistedResult, "twisted frames");
+  PCH_CHECK(twistedResult.FrameFitResidual > 1e-3);
+
+  std::vector<Eigen::Matrix3d> tooFew(frames.begin(), frames.end() - 1);
+  Status refused = ComputePolycube(cube, params, r, {}, tooFew);
+  PCH_CHECK(!refused && refused.Message().find("frames for") != std::string::npos);
+  std::vector<Eigen::Matrix3d> scaled(frames);
+  scaled[3] *= 2.0;
+  refused = ComputePolycube(cube, params, r, {}, scaled);
+  PCH_CHECK(!refused && refused.Message().find("not a rotation") != std::string::npos);
+}
+
 void TestRing()
 {
   // A genus-1 ring: a rectangular cross-section swept around a circle.
@@ -453,6 +512,7 @@ int main(int, char*[])
   TestEnergyGradient();
   TestCube();
   TestRotatedCube();
+  TestFrameGuidedCube();
   TestRing();
   TestSplit();
   TestRefusals();

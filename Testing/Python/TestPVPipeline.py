@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The whole pipeline in pvpython through the plugin, uniform guidance: a surface to tets, cuts,
-frame field, polycube, hexes. Asserts what matters: beta_1 cuts, a polycube without inverted
+frame field, polycube, hexes; then FrameField guidance, and its refusal without a frame field. Asserts what matters: beta_1 cuts, a polycube without inverted
 tets, and a valid hex mesh near the requested count with every scaled Jacobian positive."""
 import os
 import sys
@@ -56,11 +56,20 @@ assert [g.OrientationArray[1] for g in glyphs] == ["FrameU", "FrameV", "FrameW"]
 for glyph in glyphs:
     assert glyph.GetDataInformation().GetNumberOfPoints() > 0
 
-# FrameField guidance is refused clearly until the closed-form stage lands; nothing crashes.
+# FrameField guidance: the l1 stage starts from the fit of the frame field (eq. 7).
+from paraview import servermanager  # noqa: E402
+
 polycube.Guidance = "FrameField"
-try:
-    polycube.UpdatePipeline()
-except Exception:
-    pass
+polycube.UpdatePipeline()
+guided = servermanager.Fetch(polycube)
+assert guided.GetFieldData().GetAbstractArray("Guidance").GetValue(0) == "FrameField"
+assert field(polycube, "InvertedTetCount") == 0
+assert field(polycube, "PolycubeResidual") < 1e-3
+print("sphere, FrameField guidance: corners %d, frame fit residual %.3g" % (
+    field(polycube, "CornerCount"), field(polycube, "FrameFitResidual")))
+# Without a frame field it is refused with an error and an empty output; nothing crashes.
+refused = PolycubeDeform(Input=tets, Guidance="FrameField")  # noqa: F821
+refused.UpdatePipeline()
+assert servermanager.Fetch(refused).GetNumberOfCells() == 0
 print("TestPVPipeline: ok")
 sys.exit(0)
