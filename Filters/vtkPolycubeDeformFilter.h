@@ -13,10 +13,10 @@
  * Guidance: Uniform is the l1-polycube baseline (no frame field, no cuts). FrameField starts
  * the l1 stage from the map whose gradient best fits the input's `Frame` cell array (the output
  * of vtkFrameFieldFilter; the paper's eq. 7, solved with an inversion barrier). It runs on the
- * uncut mesh, so every cut transition must be the identity (genus 0, or cuts the field crosses
- * unrotated, as on rockerarm); a rotating transition is refused with an error, because the
- * closed-form join across cuts is not built yet. Automatic (the default) uses FrameField when
- * the input allows it and Uniform otherwise.
+ * uncut mesh, so the input must have no cut (genus 0): around a handle the fit cannot close up
+ * without the translation per cut of the closed-form join, which is not built yet, and such
+ * inputs are refused with an error. Automatic (the default) uses FrameField when the input
+ * allows it and Uniform otherwise.
  *
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
@@ -44,8 +44,8 @@ public:
   };
 
   ///@{
-  /// What guides the polycube. Default AUTOMATIC (FrameField when the input has identity-only
-  /// frames, else Uniform). See the class comment.
+  /// What guides the polycube. Default AUTOMATIC (FrameField when the input has frames and no
+  /// cut, else Uniform). See the class comment.
   vtkSetClampMacro(Guidance, int, AUTOMATIC, UNIFORM);
   vtkGetMacro(Guidance, int);
   ///@}

@@ -162,9 +162,9 @@ struct PolycubeResult
 /// @param tetFrames #T rotations R_t (row a = frame axis a, input coordinates) of a frame field
 ///                  without singularities (FrameFieldResult::Frames), or empty for the Uniform
 ///                  guidance. With frames, the l1 stage starts from the map whose gradient best
-///                  fits them (§4.1, eq. 7) instead of the input rotated. Cut transitions are not
-///                  taken here: the fit runs on the uncut mesh, so frames must agree across cuts
-///                  (identity transitions), and the cut translations are zero.
+///                  fits them (§4.1, eq. 7) instead of the input rotated. Cuts are not taken
+///                  here: the fit runs on the uncut mesh, which suits genus 0 only (around a
+///                  handle the fit cannot close up without a translation per cut).
 Status ComputePolycube(const TetMesh& input,
   const PolycubeParameters& params,
   PolycubeResult& out,
