@@ -119,11 +119,8 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   }
   else if (this->Guidance == AUTOMATIC)
   {
+    // The Guidance field of the output says which one ran.
     frameGuided = hasFrames;
-    if (!hasFrames && input->GetCellData()->GetArray(names::Frame))
-    {
-      vtkWarningMacro(<< "Automatic guidance uses Uniform: FrameField needs " << guidanceProblem);
-    }
   }
   if (!frameGuided)
   {

@@ -1,0 +1,91 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""polycubehex: an all-hex mesh from a file, on the command line.
+
+    polycubehex input.obj -o hexes.vtu [--hexes 10000] [--uniform] [--no-padding]
+                [--no-smoothing] [--report report.md]
+
+Input: a closed surface (.obj .stl .ply .off .vtp, tetrahedralized with TetGen) or a tet mesh
+(.mesh .vtk .vtu). Output: .vtu, .vtk or MEDIT .mesh. Prints the quality table at the end and
+exits with status 1 and the refusing stage's message when a stage refuses its input.
+"""
+import argparse
+import os
+import sys
+
+from vtkmodules.vtkCommonCore import vtkLogger
+
+from .pipeline import WRITERS, PipelineError, format_report, mesh, write
+
+
+class ProgressLine:
+    """One progress line per stage on a terminal; nothing when stderr is not a terminal."""
+
+    def __init__(self, stream):
+        self.stream = stream
+        self.enabled = stream.isatty()
+        self.stage = None
+
+    def __call__(self, stage, fraction):
+        if not self.enabled:
+            return
+        if stage != self.stage and self.stage is not None:
+            self.stream.write("\n")
+        self.stage = stage
+        filled = int(30 * fraction)
+        self.stream.write("\r%-15s [%s%s] %3d%%" % (stage, "#" * filled, "." * (30 - filled),
+                                                   int(100 * fraction)))
+        self.stream.flush()
+
+    def finish(self):
+        if self.enabled and self.stage is not None:
+            self.stream.write("\n")
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(
+        prog="polycubehex", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__.split("\n\n", 1)[1])
+    parser.add_argument("input", help="surface or tet mesh file")
+    parser.add_argument("-o", "--output", required=True, help="hex mesh file (.vtu .vtk .mesh)")
+    parser.add_argument("--hexes", type=int, default=10000,
+                        help="target hex count, padding included (default 10000)")
+    parser.add_argument("--uniform", action="store_true",
+                        help="the l1-polycube baseline instead of the frame-field guidance")
+    parser.add_argument("--no-padding", action="store_true", help="no padding layer")
+    parser.add_argument("--no-smoothing", action="store_true", help="the raw extraction")
+    parser.add_argument("--report", help="also write the quality table to this Markdown file")
+    parser.add_argument("--verbose", action="store_true", help="show VTK's own log lines")
+    args = parser.parse_args(argv)
+    if args.hexes < 1:
+        parser.error("--hexes must be at least 1")
+    if os.path.splitext(args.output)[1].lower() not in WRITERS:
+        parser.error("the output must end in %s" % ", ".join(sorted(WRITERS)))
+    if not args.verbose:
+        # Stage errors are reported once, below, instead of VTK's log lines.
+        vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+
+    progress = ProgressLine(sys.stderr)
+    try:
+        hexes, report = mesh(args.input, hex_count=args.hexes,
+                             guidance="uniform" if args.uniform else "automatic",
+                             padding=not args.no_padding, smoothing=not args.no_smoothing,
+                             progress=progress)
+        write(hexes, args.output)
+    except PipelineError as error:
+        progress.finish()
+        print("polycubehex: error: %s" % error, file=sys.stderr)
+        return 1
+    progress.finish()
+    for warning in report["warnings"]:
+        print("polycubehex: warning: %s" % warning, file=sys.stderr)
+    table = format_report(report)
+    print(table)
+    print("wrote %s" % os.path.abspath(args.output))
+    if args.report:
+        with open(args.report, "w") as out:
+            out.write("# PolycubeHex report: %s\n\n%s\n" % (os.path.basename(args.input), table))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
