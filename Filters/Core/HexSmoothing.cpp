@@ -498,7 +498,7 @@ Status smoothHexMesh(HexMesh& mesh,
 
       // 2. Pattern search near the worst hexes: axis moves, in the tangent plane on the surface
       //    and along the curve on a feature, shrinking the step while nothing improves.
-      if (current.Min >= floor + params.WorstBand)
+      if (current.Min >= floor + params.WorstBand && current.Min >= params.UntangleBelow)
       {
         continue;
       }

@@ -35,6 +35,10 @@ struct HexSmoothingParameters
   /// Vertices whose worst hex is within this of the mesh's minimum scaled Jacobian also get a
   /// pattern search that maximises it (default 0.1, >= 0; a negative value turns it off).
   double WorstBand = 0.1;
+  /// Every vertex with a hex below this scaled Jacobian gets the pattern search too, whatever
+  /// the mesh's minimum (default 0.1): inverted hexes scattered at different depths are all
+  /// worked on in each sweep, not only the worst few.
+  double UntangleBelow = 0.1;
 };
 
 /// Quality before and after.

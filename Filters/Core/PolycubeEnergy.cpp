@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolycubeEnergy.h"
 
+#include "ThreadCount.h"
 #include "TetGeometry.h"
 
 #include <Eigen/Dense>
@@ -391,7 +392,7 @@ namespace
 template<typename Body>
 void ParallelChunks(int count, const Body& body)
 {
-  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned hardware = ThreadCount();
   const int threads = count < 4096 ? 1 : static_cast<int>(std::min(hardware, 4u));
   if (threads == 1)
   {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolycubeNewton.h"
 
+#include "ThreadCount.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -24,7 +26,7 @@ template<typename Task>
 void RunTasks(int count, const Task& task)
 {
   const int threads =
-    std::min(count, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+    std::min(count, static_cast<int>(ThreadCount()));
   if (threads <= 1)
   {
     for (int i = 0; i < count; ++i)
