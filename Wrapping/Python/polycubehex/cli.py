@@ -5,8 +5,9 @@
                 [--no-smoothing] [--report report.md]
 
 Input: a closed surface (.obj .stl .ply .off .vtp, tetrahedralized with TetGen) or a tet mesh
-(.mesh .vtk .vtu). Output: .vtu, .vtk or MEDIT .mesh. Prints the quality table at the end and
-exits with status 1 and the refusing stage's message when a stage refuses its input.
+(.mesh .vtk .vtu). Output: .vtu, .vtk or MEDIT .mesh. Prints the quality table at the end.
+Exit status: 0 for a valid hex mesh; 1 with the refusing stage's message when a stage refuses its
+input; 2 when the mesh was written but is not valid (inverted hexes; the warnings say why).
 """
 import argparse
 import os
@@ -84,6 +85,11 @@ def main(argv=None):
     if args.report:
         with open(args.report, "w") as out:
             out.write("# PolycubeHex report: %s\n\n%s\n" % (os.path.basename(args.input), table))
+    if report.get("ValidHexMesh") != 1:
+        # Written for inspection, but never reported as a success.
+        print("polycubehex: the hex mesh is not valid (%d inverted hexes); see the warnings" %
+              report.get("InvertedHexCount", -1), file=sys.stderr)
+        return 2
     return 0
 
 
