@@ -250,6 +250,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     {
       break;
     }
+    if (bestEffort && Seconds(start) > 2.0 * rounding.TimeBudgetSeconds)
+    {
+      break; // other scales rarely do better than a best effort; do not spend minutes on them
+    }
   }
   if (!status && bestEffort && status.Message().find("aborted") == std::string::npos)
   {

@@ -13,6 +13,7 @@
 #include <ceres/gradient_problem_solver.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -1163,7 +1164,8 @@ Status GreedyRound(const PolycubePlaneSolver& solver,
   bool checkVolumes,
   Eigen::VectorXd& planes,
   int& fallbackCount,
-  const Progress& progress)
+  const Progress& progress,
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max())
 {
   const int planeCount = static_cast<int>(planes.size());
   const int candidateCount = std::max(1, params.CandidateCount);
@@ -1175,6 +1177,10 @@ Status GreedyRound(const PolycubePlaneSolver& solver,
     if (!ReportProgress(progress, static_cast<double>(step) / std::max(1, planeCount)))
     {
       return Status::Failure("integer rounding aborted");
+    }
+    if (std::chrono::steady_clock::now() > deadline)
+    {
+      return Status::Failure("integer rounding ran out of its time budget (TimeBudgetSeconds)");
     }
     int chosen = -1;
     double best = std::numeric_limits<double>::max();
@@ -1316,7 +1322,11 @@ Status roundPolycubePlanes(const Points& rest,
   {
     return status;
   }
-  if (!finish(planes))
+  const auto started = std::chrono::steady_clock::now();
+  const auto budget = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+    std::chrono::duration<double>(std::max(0.0, params.TimeBudgetSeconds)));
+  const auto deadline = started + budget;
+  if (!finish(planes) && std::chrono::steady_clock::now() < started + budget / 2)
   {
     // The same integers, reached by moving the planes under a barrier (every tet stays
     // positive) instead of the linear re-solve.
@@ -1351,7 +1361,8 @@ Status roundPolycubePlanes(const Points& rest,
       true,
       planes,
       result.FallbackCount,
-      [&progress](double p) { return ReportProgress(progress, 0.3 + 0.7 * p); });
+      [&progress](double p) { return ReportProgress(progress, 0.3 + 0.7 * p); },
+      deadline);
     if (!status && status.Message().find("aborted") != std::string::npos)
     {
       return status;

@@ -164,6 +164,11 @@ struct IntegerRoundingParameters
   /// deformation could not realise (a chart squeezed between planes it got too close) leave a
   /// few such tets; a mesh with a few bad hexes and a warning serves better than none.
   bool AcceptInvertedTets = true;
+  /// Wall seconds the slow fallbacks may take after the first rounding failed (default 10): the
+  /// barrier relaxation starts only within the first half, and the careful path stops at the end
+  /// (then AcceptInvertedTets decides). Both rarely rescue a polycube whose labels the
+  /// deformation could not flatten, and on 75k tets they took minutes.
+  double TimeBudgetSeconds = 10.0;
 };
 
 /// What roundPolycubePlanes produced.

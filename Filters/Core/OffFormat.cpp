@@ -165,7 +165,8 @@ Status ReadOff(const std::string& text, OffMesh& mesh)
       return Status::Failure("OFF: " + entity + " starts with '" + tokens[0] +
         "', expected its number of vertices (3 or more)");
     }
-    if (static_cast<long long>(tokens.size()) < size + 1)
+    // Compared as size > tokens - 1: size + 1 overflows for a count near 2^63.
+    if (size > static_cast<long long>(tokens.size()) - 1)
     {
       return Status::Failure("OFF: " + entity + " declares " + std::to_string(size) +
         " vertices but its line has " + std::to_string(tokens.size() - 1) + " values");

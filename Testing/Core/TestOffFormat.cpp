@@ -75,5 +75,8 @@ int main(int argc, char* argv[])
   PCH_CHECK(FailsMentioning(Replace(valid, "1 0 0\n", "nan 0 0\n"), "non-finite"));
   PCH_CHECK(FailsMentioning(Replace(valid, "4 4 6", "4 x 6"), "counts"));
   PCH_CHECK(FailsMentioning(Replace(valid, "4 4 6", "4 4000000 6"), "more than the file"));
+  // Found by the fuzzer (FuzzReaders): a vertex count near 2^63 overflowed a size check.
+  PCH_CHECK(FailsMentioning("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n9223372036854775807 0 1 2\n",
+    "declares 9223372036854775807 vertices"));
   return PCH_TEST_RESULT();
 }

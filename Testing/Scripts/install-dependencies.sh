@@ -9,6 +9,7 @@ packages=(
   libtet1.5-dev                            # TetGen 1.5 (AGPL-3+)
   cmake ninja-build g++                    # build
   xvfb xauth x11-apps imagemagick          # an X server for rendering, screenshots
+  clang libclang-rt-14-dev                 # libFuzzer for the fuzz test (label fuzz)
 )
 
 missing=()
