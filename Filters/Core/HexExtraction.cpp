@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HexExtraction.h"
 
+#include "MemoryBudget.h"
+
 #include "HexLatticeExtraction.h"
 #include "HexMeshValidity.h"
 #include "HexPadding.h"
@@ -210,6 +212,19 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   if (!(result.LatticeScale > 0.0))
   {
     return Status::Failure("cannot choose a resolution from these targets");
+  }
+  {
+    // About 2 kB per hex at the peak (lattice points per tet, their keys, the padding copies,
+    // the smoothing's adjacency), measured within a factor of two on rockerarm.
+    const double s = result.LatticeScale;
+    const double hexes = polycubeVolume * s * s * s + (params.Padding ? polycubeArea * s * s : 0.0);
+    if (!(status = CheckMemoryEstimate("hex extraction of about " +
+              std::to_string(static_cast<long long>(hexes)) + " hexes",
+            2048.0 * hexes,
+            "lower TargetHexCount or raise TargetEdgeLength")))
+    {
+      return status;
+    }
   }
   const Eigen::RowVector3d polycubeCentre = 0.5 *
     (input.PolycubeVertices.colwise().minCoeff() + input.PolycubeVertices.colwise().maxCoeff());

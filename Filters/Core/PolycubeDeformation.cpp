@@ -2,6 +2,7 @@
 #include "PolycubeDeformation.h"
 
 #include "DisjointSets.h"
+#include "MemoryBudget.h"
 #include "PolycubeCharts.h"
 #include "PolycubeEnergy.h"
 #include "PolycubeNewton.h"
@@ -364,6 +365,15 @@ Status ComputePolycube(const TetMesh& input,
   {
     return Status::Failure("ComputePolycube: " + std::to_string(tetFrames.size()) +
       " frames for " + std::to_string(input.Cells.rows()) + " tets");
+  }
+
+  // About 4 kB per tet at the peak (the Hessian's 3x3 blocks and its factorisations).
+  status = CheckMemoryEstimate("ComputePolycube: " + std::to_string(input.Cells.rows()) + " tets",
+    4096.0 * static_cast<double>(input.Cells.rows()),
+    "coarsen the tet mesh");
+  if (!status)
+  {
+    return status;
   }
 
   // Normalised working copy (DESIGN.md "Scale").

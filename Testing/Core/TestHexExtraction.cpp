@@ -630,6 +630,11 @@ void TestRefusals()
   PCH_CHECK(!status.Ok());
   std::cout << "flipped labels: " << status.Message() << std::endl;
 
+  // Guard rail: two billion hexes would need terabytes; refused up front with the estimate.
+  status = extractHexMesh(good, Raw(2000000000), result);
+  PCH_CHECK(!status.Ok() && status.Message().find("GB") != std::string::npos);
+  std::cout << "too many hexes: " << status.Message() << std::endl;
+
   HexExtractionParameters none = Raw(0);
   status = extractHexMesh(good, none, result);
   PCH_CHECK(!status.Ok());
