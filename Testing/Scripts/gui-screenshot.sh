@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Opens the ParaView GUI under Xvfb with the plugin loaded and a model open, and saves a
 # screenshot of the whole screen: what a user sees. Usage: gui-screenshot.sh <model> <out.png>
+# With POLYCUBEHEX_GUI_PIPELINE=1 the GUI loads the Python state
+# Wrapping/Python/examples/pipeline_state.py instead: the whole pipeline on <model>.
 set -euo pipefail
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="${POLYCUBEHEX_BUILD:-$source_dir/build}"
@@ -18,6 +20,17 @@ display.SetRepresentationType("Surface With Edges")
 ResetCamera()
 Render()
 PY
+if [ "${POLYCUBEHEX_GUI_PIPELINE:-0}" = 1 ]; then
+  cat > "$work/load.py" <<PY
+import os
+os.environ["POLYCUBEHEX_PLUGIN"] = "$plugin"
+os.environ["POLYCUBEHEX_MODEL"] = "$model"
+exec(open("$source_dir/Wrapping/Python/examples/pipeline_state.py").read(),
+     {"__file__": "$source_dir/Wrapping/Python/examples/pipeline_state.py"})
+from paraview.simple import Render
+Render()
+PY
+fi
 cat > "$work/run.sh" <<SH
 paraview --script="$work/load.py" > "$work/paraview.log" 2>&1 &
 sleep "\${POLYCUBEHEX_GUI_WAIT:-20}"
