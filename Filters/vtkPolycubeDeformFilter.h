@@ -15,8 +15,9 @@
  * of vtkFrameFieldFilter; the paper's eq. 7, solved with an inversion barrier). It runs on the
  * uncut mesh, so the input must have no cut (genus 0): around a handle the fit cannot close up
  * without the translation per cut of the closed-form join, which is not built yet, and such
- * inputs are refused with an error. Automatic (the default) uses FrameField when the input
- * allows it and Uniform otherwise.
+ * inputs are refused with an error. Automatic (the default) runs Uniform for now: measured on
+ * the shared models, the uncut frame fit is not yet better than Uniform (BENCHMARKS.md); it will
+ * switch to FrameField with the closed-form join.
  *
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
@@ -44,8 +45,7 @@ public:
   };
 
   ///@{
-  /// What guides the polycube. Default AUTOMATIC (FrameField when the input has frames and no
-  /// cut, else Uniform). See the class comment.
+  /// What guides the polycube. Default AUTOMATIC (Uniform for now). See the class comment.
   vtkSetClampMacro(Guidance, int, AUTOMATIC, UNIFORM);
   vtkGetMacro(Guidance, int);
   ///@}

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """polycubehex: an all-hex mesh from a file, on the command line.
 
-    polycubehex input.obj -o hexes.vtu [--hexes 10000] [--uniform] [--no-padding]
-                [--no-smoothing] [--report report.md]
+    polycubehex input.obj -o hexes.vtu [--hexes 10000] [--guidance automatic|framefield|uniform]
+                [--no-padding] [--no-smoothing] [--report report.md]
 
 Input: a closed surface (.obj .stl .ply .off .vtp, tetrahedralized with TetGen) or a tet mesh
 (.mesh .vtk .vtu). Output: .vtu, .vtk or MEDIT .mesh. Prints the quality table at the end.
@@ -50,8 +50,11 @@ def main(argv=None):
     parser.add_argument("-o", "--output", required=True, help="hex mesh file (.vtu .vtk .mesh)")
     parser.add_argument("--hexes", type=int, default=10000,
                         help="target hex count, padding included (default 10000)")
-    parser.add_argument("--uniform", action="store_true",
-                        help="the l1-polycube baseline instead of the frame-field guidance")
+    parser.add_argument("--guidance", choices=["automatic", "framefield", "uniform"],
+                        default="automatic",
+                        help="what guides the polycube: automatic (today: uniform), framefield "
+                        "(models without handles only, for now) or uniform (the l1 baseline)")
+    parser.add_argument("--uniform", action="store_true", help="same as --guidance uniform")
     parser.add_argument("--no-padding", action="store_true", help="no padding layer")
     parser.add_argument("--no-smoothing", action="store_true", help="the raw extraction")
     parser.add_argument("--report", help="also write the quality table to this Markdown file")
@@ -68,7 +71,7 @@ def main(argv=None):
     progress = ProgressLine(sys.stderr)
     try:
         hexes, report = mesh(args.input, hex_count=args.hexes,
-                             guidance="uniform" if args.uniform else "automatic",
+                             guidance="uniform" if args.uniform else args.guidance,
                              padding=not args.no_padding, smoothing=not args.no_smoothing,
                              progress=progress)
         write(hexes, args.output)
