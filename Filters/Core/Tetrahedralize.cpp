@@ -2,6 +2,8 @@
 // The only file of the project that includes tetgen.h (TetGen is AGPL-3+, see the README).
 #include "Tetrahedralize.h"
 
+#include "MemoryBudget.h"
+
 #include "SurfaceCheck.h"
 
 #include <Eigen/Geometry>
@@ -581,6 +583,19 @@ Status Tetrahedralize(const SurfaceMesh& surface,
   {
     const double fromTarget = TargetVolumeFactor * report.EnclosedVolume / params.TargetTetCount;
     maxVolume = maxVolume > 0.0 ? std::min(maxVolume, fromTarget) : fromTarget;
+  }
+  if (maxVolume > 0.0)
+  {
+    // TetGen's tets average a third to a fifth of the bound; about 1 kB per tet at its peak.
+    const double tets = 5.0 * report.EnclosedVolume / maxVolume;
+    const Status fits = CheckMemoryEstimate("tetrahedralizing into about " +
+        std::to_string(static_cast<long long>(tets)) + " tets",
+      1024.0 * tets,
+      "raise MaxTetVolume or lower TargetTetCount");
+    if (!fits)
+    {
+      return fits;
+    }
   }
   const std::string switches = FormatSwitches(params, maxVolume);
   if (!ReportProgress(progress, 0.1))

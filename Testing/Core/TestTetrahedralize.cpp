@@ -236,6 +236,18 @@ int main(int, char*[])
   const TetMesh targeted = Mesh("ball, 20000 tets", sphere, target, PolyhedronVolume(sphere), 1);
   PCH_CHECK(targeted.Cells.rows() > 10000 && targeted.Cells.rows() < 40000);
 
+  // Guard rail: a bound that would make about 2e16 tets is refused before TetGen runs.
+  {
+    TetrahedralizeParameters huge;
+    huge.MaxTetVolume = 1e-15;
+    TetMesh unused;
+    std::string switches;
+    const polycubehex::Status refused =
+      polycubehex::Tetrahedralize(sphere, huge, unused, switches);
+    PCH_CHECK(!refused && refused.Message().find("GB") != std::string::npos);
+    std::cout << "refused: " << refused.Message() << std::endl;
+  }
+
   // A ball with a void (inner sphere facing into the void): the void stays empty.
   const SurfaceMesh outer = Icosphere(3, 1.0, Eigen::Vector3d::Zero());
   const SurfaceMesh inner = Icosphere(2, 0.4, Eigen::Vector3d(0.2, 0.1, 0.0), true);

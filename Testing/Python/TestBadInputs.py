@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """A corpus of bad inputs, generated into the build tree, each through the whole pipeline by the
-command-line program (every filter in turn). Each must end in one of three ways, never a crash,
+command-line program (every filter in turn), then each readable one straight into every filter
+on its own. Each must end in one of three ways, never a crash,
 a hang or an invalid mesh reported as success:
   status 1: a stage refused it, with one readable line naming the stage (and, where the case says
             so, the expected words);
@@ -192,6 +193,36 @@ for name, contents, expected in cases:
             name, expected, verdict))
     if result.returncode == 1 and os.path.exists(output):
         failures.append("%s: refused but wrote %s" % (name, output))
+
+# The same inputs straight into every filter on its own (not only what the previous stage lets
+# through): each Update either fails (with an error) or succeeds with an output; none may crash.
+import polycubehex  # noqa: E402
+from polycubehex.pipeline import PipelineError, read  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkLogger, vtkObject  # noqa: E402
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+vtkObject.GlobalWarningDisplayOff()
+filters = [polycubehex.vtkTetrahedralizeFilter, polycubehex.vtkHandleCutFilter,
+           polycubehex.vtkFrameFieldFilter, polycubehex.vtkPolycubeDeformFilter,
+           polycubehex.vtkHexExtractFilter, polycubehex.vtkHexMeshQuality]
+direct = 0
+for name, contents, expected in cases:
+    try:
+        data, _ = read(os.path.join(corpus, name))
+    except PipelineError:
+        continue  # refused by the reader: covered above
+    outcomes = []
+    for make in filters:
+        algorithm = make()
+        algorithm.SetInputData(data)
+        ok = algorithm.GetExecutive().Update()
+        output = algorithm.GetOutputDataObject(0)
+        if ok and output is None:
+            failures.append("%s: %s succeeded without an output" % (name, make.__name__))
+        outcomes.append("%s %s" % (make.__name__[3:], "ok" if ok else "refused"))
+        direct += 1
+    print("%-28s direct: %s" % (name, ", ".join(outcomes)))
+print("%d direct filter runs" % direct)
 
 print("%d cases" % len(cases))
 assert len(cases) >= 30
