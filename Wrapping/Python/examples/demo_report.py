@@ -44,6 +44,13 @@ def black_bar(lut, view, title):
     bar.Visibility = 1
 
 
+def oblique(view):
+    """The same three-quarter view for every 3D picture."""
+    view.CameraPosition = [1, -1.5, 1.2]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+
+
 def save(view, directory, name, size):
     path = os.path.join(directory, name)
     view.ResetCamera()
@@ -113,6 +120,7 @@ def main():
     tubes = simple.Show(loops, view)
     tubes.ColorArrayName = ["POINTS", ""]
     tubes.DiffuseColor = [0, 0, 0]
+    oblique(view)
     pictures.append(("Cuts (§2): one surface per handle, the handle loops in black",
                      save(view, out, name + "_cuts.png", args.size)))
 
@@ -121,6 +129,7 @@ def main():
     outline.Opacity = 0.12
     outline.ColorArrayName = ["POINTS", ""]
     show_frame_glyphs(frames, view)
+    oblique(view)
     pictures.append(("Frame field (§3): the three axes as red, green and blue arrows",
                      save(view, out, name + "_frames.png", args.size)))
 
