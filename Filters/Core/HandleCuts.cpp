@@ -267,6 +267,22 @@ Status ComputeHandleCuts(const TetMesh& mesh,
   state.Vertices = mesh.Vertices;
   state.ToOriginal.resize(mesh.Vertices.rows());
   std::iota(state.ToOriginal.begin(), state.ToOriginal.end(), 0);
+  // Later stages need positive tets; saying so here names the problem at the first stage.
+  if (!mesh.Vertices.allFinite())
+  {
+    return Status::Failure("handle cuts: input: a vertex has a non-finite coordinate");
+  }
+  for (int t = 0; t < tetCount; ++t)
+  {
+    const double volume = TetSignedVolume(mesh.Vertices, mesh.Cells, t);
+    if (!(volume > 0.0))
+    {
+      std::ostringstream message;
+      message << "handle cuts: input: tet " << t << " has non-positive volume (" << volume
+              << "); the tets must be positively oriented (VTK node order) and not flat";
+      return Status::Failure(message.str());
+    }
+  }
   Status status = Analyze(state);
   if (!status)
   {
