@@ -16,24 +16,6 @@ import time
 
 from paraview import servermanager, simple
 
-REPORT_FIELDS = ["HexCount", "PaddingHexCount", "ScaledJacobianMin", "ScaledJacobianMean",
-                 "InvertedHexCount", "ValidHexMesh", "IrregularBoundaryVertexCount",
-                 "DistanceMean", "DistanceHausdorff", "CornerCount", "BettiNumber",
-                 "PolycubeResidual", "Guidance", "RoundingInvertedTetCount"]
-
-
-def white_view(size):
-    view = simple.CreateView("RenderView")
-    view.ViewSize = size
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.Background = [1, 1, 1]
-    view.OrientationAxesVisibility = 0
-    return view
-
-
 def black_bar(lut, view, title):
     """A scalar bar readable on the white background."""
     bar = simple.GetScalarBar(lut, view)
@@ -59,10 +41,10 @@ def save(view, directory, name, size):
     return name
 
 
-def field_values(proxy):
+def field_values(proxy, names):
     fields = servermanager.Fetch(proxy).GetFieldData()
     values = {}
-    for name in REPORT_FIELDS:
+    for name in names:
         array = fields.GetAbstractArray(name)
         if array is not None and array.GetNumberOfValues() > 0:
             value = array.GetVariantValue(0)
@@ -79,7 +61,8 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=[1000, 750])
     args = parser.parse_args()
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    from polycubehex.visualization import show_frame_glyphs
+    from polycubehex.pipeline import REPORT_FIELDS, format_report
+    from polycubehex.visualization import show_frame_glyphs, white_view
 
     out = args.output_dir
     os.makedirs(out, exist_ok=True)
@@ -190,24 +173,18 @@ def main():
                           ImageResolution=args.size)
     pictures.append(("Scaled Jacobian histogram", name + "_histogram.png"))
 
-    values = field_values(hexes)
-    lines = ["# PolycubeHex report: %s" % os.path.basename(args.model), "",
-             "| measure | value |", "|---|---|",
-             "| tets | %d |" % tets.GetDataInformation().GetNumberOfCells()]
-    for key in REPORT_FIELDS:
-        if key in values:
-            value = values[key]
-            text = value if isinstance(value, str) else (
-                "%d" % value if float(value).is_integer() else "%.4g" % value)
-            lines.append("| %s | %s |" % (key, text))
-    lines += ["| seconds: %s | %.2f |" % item for item in seconds.items()]
+    report = field_values(hexes, REPORT_FIELDS)
+    report["tets"] = tets.GetDataInformation().GetNumberOfCells()
+    report["seconds"] = seconds
+    table = format_report(report)
+    lines = ["# PolycubeHex report: %s" % os.path.basename(args.model), "", table]
     lines += ["", "Distances in units of 1e-3 of the bounding-box diagonal. `ValidHexMesh` 0 means"
               " some hex is inverted or degenerate (see the warnings printed above).", ""]
     for caption, picture in pictures:
         lines += ["## " + caption, "", "![%s](%s)" % (caption, picture), ""]
-    with open(os.path.join(out, "report.md"), "w") as report:
-        report.write("\n".join(lines))
-    print("\n".join(lines[:len(REPORT_FIELDS) + 12]))
+    with open(os.path.join(out, "report.md"), "w") as markdown:
+        markdown.write("\n".join(lines))
+    print(table)
     print("wrote %s" % os.path.join(out, "report.md"))
 
 

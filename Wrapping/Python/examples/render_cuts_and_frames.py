@@ -13,18 +13,6 @@ import os
 from paraview import simple
 
 
-def white_view(size):
-    view = simple.CreateView("RenderView")
-    view.ViewSize = size
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.Background = [1, 1, 1]
-    view.OrientationAxesVisibility = 0
-    return view
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -34,7 +22,7 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=[1200, 900])
     args = parser.parse_args()
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    from polycubehex.visualization import show_frame_glyphs
+    from polycubehex.visualization import show_frame_glyphs, white_view
 
     name = os.path.splitext(os.path.basename(args.model))[0]
     os.makedirs(args.output_dir, exist_ok=True)

@@ -6,6 +6,21 @@
     show_frame_glyphs(frames)       # three arrow sets: FrameU red, FrameV green, FrameW blue
 """
 
+def white_view(size=(1200, 900)):
+    """A new render view with a white background and no orientation axes, for pictures."""
+    from paraview import simple
+
+    view = simple.CreateView("RenderView")
+    view.ViewSize = list(size)
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    view.Background = [1, 1, 1]
+    view.OrientationAxesVisibility = 0
+    return view
+
+
 COLORS = (("FrameU", (0.85, 0.1, 0.1)), ("FrameV", (0.1, 0.65, 0.1)), ("FrameW", (0.1, 0.2, 0.9)))
 
 
