@@ -96,6 +96,7 @@ int vtkFrameFieldFilter::RequestData(vtkInformation*,
   params.BoundaryAlignmentWeight = this->BoundaryAlignmentWeight;
   params.AlignmentWeight = this->AlignmentWeight;
   params.NormalDifferenceWeight = this->NormalDifferenceWeight;
+  params.NormalDifferenceMaxAngle = this->NormalDifferenceMaxAngle;
   params.OrthogonalityWeight = this->OrthogonalityWeight;
   params.L1Epsilon = this->L1Epsilon;
   params.GradientTolerance = this->GradientTolerance;
@@ -227,6 +228,7 @@ void vtkFrameFieldFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BoundaryAlignmentWeight: " << this->BoundaryAlignmentWeight << "\n";
   os << indent << "AlignmentWeight: " << this->AlignmentWeight << "\n";
   os << indent << "NormalDifferenceWeight: " << this->NormalDifferenceWeight << "\n";
+  os << indent << "NormalDifferenceMaxAngle: " << this->NormalDifferenceMaxAngle << "\n";
   os << indent << "OrthogonalityWeight: " << this->OrthogonalityWeight << "\n";
   os << indent << "L1Epsilon: " << this->L1Epsilon << "\n";
   os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";

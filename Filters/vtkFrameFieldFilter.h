@@ -50,6 +50,14 @@ public:
   ///@}
 
   ///@{
+  /// Boundary edges whose face normals are more than this apart (degrees) are left out of the
+  /// normal difference: there the faces belong on different axes. Default 45; 180 keeps every
+  /// edge, as the paper.
+  vtkSetClampMacro(NormalDifferenceMaxAngle, double, 0.0, 180.0);
+  vtkGetMacro(NormalDifferenceMaxAngle, double);
+  ///@}
+
+  ///@{
   /// w_R of eq. (1), the orthogonality penalty. Default 1, positive.
   vtkSetClampMacro(OrthogonalityWeight, double, 1e-12, VTK_DOUBLE_MAX);
   vtkGetMacro(OrthogonalityWeight, double);
@@ -90,6 +98,7 @@ protected:
   double BoundaryAlignmentWeight = 30.0;
   double AlignmentWeight = 0.1;
   double NormalDifferenceWeight = 0.01;
+  double NormalDifferenceMaxAngle = 45.0;
   double OrthogonalityWeight = 1.0;
   double L1Epsilon = 1e-3;
   double GradientTolerance = 1e-5;

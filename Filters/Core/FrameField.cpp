@@ -51,7 +51,8 @@ Status CheckMesh(const TetMesh& mesh, const FrameFieldParameters& p)
     return Status::Failure("The mesh has non-finite vertex coordinates.");
   }
   if (!(p.BoundaryAlignmentWeight > 0.0) || !(p.AlignmentWeight >= 0.0) ||
-    !(p.NormalDifferenceWeight >= 0.0) || !(p.OrthogonalityWeight > 0.0) || !(p.L1Epsilon > 0.0) ||
+    !(p.NormalDifferenceWeight >= 0.0) ||
+    !(p.NormalDifferenceMaxAngle >= 0.0 && p.NormalDifferenceMaxAngle <= 180.0) || !(p.OrthogonalityWeight > 0.0) || !(p.L1Epsilon > 0.0) ||
     !(p.GradientTolerance >= 0.0) || p.MaxIterations < 0)
   {
     return Status::Failure("Invalid frame field parameters: weights and epsilon must be positive "
@@ -207,6 +208,7 @@ Status ComputeFrameField(const TetMesh& input,
   FrameFieldEnergyWeights weights;
   weights.Alignment = parameters.AlignmentWeight;
   weights.NormalDifference = parameters.NormalDifferenceWeight;
+  weights.NormalDifferenceMaxAngle = parameters.NormalDifferenceMaxAngle;
   weights.Orthogonality = parameters.OrthogonalityWeight;
   weights.L1Epsilon = parameters.L1Epsilon;
   const FrameFieldEnergy energy(mesh, topology, faceCut, faceSide, weights);

@@ -46,6 +46,12 @@ struct FrameFieldParameters
   double AlignmentWeight = 0.1;
   /// w_d of eq. (1): the normal difference (5). Range [0, inf).
   double NormalDifferenceWeight = 0.01;
+  /// Boundary edges sharper than this (the angle between the two face normals, degrees) are left
+  /// out of (5). Our addition: past 45 degrees two faces fit a frame better on perpendicular axes
+  /// than on one, so (5) there only pulls the frames off the faces (on a cube, 0.1 degree off at
+  /// every edge). Smooth surfaces have no such edge and are unaffected; 180 restores the paper's
+  /// sum over every edge. Range [0, 180].
+  double NormalDifferenceMaxAngle = 45.0;
   /// w_R of eq. (1): the orthogonality penalty. Range (0, inf).
   double OrthogonalityWeight = 1.0;
   /// eps of the smoothed l1 norm |u| ~ sqrt(u^2 + eps). Range (0, inf).

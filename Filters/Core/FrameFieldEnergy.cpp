@@ -92,7 +92,7 @@ FrameFieldEnergy::FrameFieldEnergy(const TetMesh& mesh,
     this->BoundaryTerms.push_back(term);
   }
 
-  // (5): pairs of boundary faces sharing an edge that is not an edge of a cut face.
+  // (5): pairs of boundary faces sharing an edge that is not an edge of a cut face, nor sharp.
   std::vector<std::array<int, 2>> cutEdges;
   if (hasCuts)
   {
@@ -117,6 +117,7 @@ FrameFieldEnergy::FrameFieldEnergy(const TetMesh& mesh,
   }
   const Triangles adjacency =
     ComputeFaceAdjacency(static_cast<int>(mesh.Vertices.rows()), topology.BoundaryFaces);
+  const double cosMaxAngle = std::cos(weights.NormalDifferenceMaxAngle * 3.14159265358979323846 / 180.0);
   for (int f = 0; f < faceCount; ++f)
   {
     for (int e = 0; e < 3; ++e)
@@ -130,6 +131,13 @@ FrameFieldEnergy::FrameFieldEnergy(const TetMesh& mesh,
       const int b = topology.BoundaryFaces(f, (e + 1) % 3);
       const std::array<int, 2> edge = { std::min(a, b), std::max(a, b) };
       if (std::binary_search(cutEdges.begin(), cutEdges.end(), edge))
+      {
+        continue;
+      }
+      // Beyond the threshold the two faces are meant for different axes (past 45 degrees a
+      // frame fits them better on two perpendicular axes than on one): (5) would only pull
+      // both frames off their faces there, e.g. 0.1 degree at the edges of a cube.
+      if (normal[f].dot(normal[g]) < cosMaxAngle)
       {
         continue;
       }

@@ -27,6 +27,8 @@ struct FrameFieldEnergyWeights
 {
   double Alignment = 0.1;         ///< w_a, eq. (4)
   double NormalDifference = 0.01; ///< w_d, eq. (5)
+  /// (5) skips boundary edges whose two face normals are more than this apart (degrees).
+  double NormalDifferenceMaxAngle = 45.0;
   double Orthogonality = 1.0;     ///< w_R
   double L1Epsilon = 1e-3;        ///< eps in |u| ~ sqrt(u^2 + eps)
 };

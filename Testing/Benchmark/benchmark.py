@@ -126,9 +126,9 @@ def run_model(path, repeat):
         row["singular"] = int(fields.GetArray("SingularEdgeCount").GetTuple1(0))
         row["max depth"] = fields.GetArray("MaxSingularEdgeDepth").GetTuple1(0)
         transitions = fields.GetArray("CutTransitions")
-        row["non-identity transitions"] = sum(
-            1 for c in range(transitions.GetNumberOfTuples())
-            if transitions.GetTuple(c) != (1, 0, 0, 0, 1, 0, 0, 0, 1))
+        row["transitions"] = " ".join(
+            describe_cube_rotation(transitions.GetTuple(c))
+            for c in range(transitions.GetNumberOfTuples())) or "-"
 
     # §4.1-4.2 and §4.3, once per guidance: Uniform (the l1 baseline) on the tets, FrameField
     # on the frame field's output (refused when a cut transition rotates the frames).
@@ -189,6 +189,26 @@ def run_guidance(name, tets, source, guidance, repeat):
     return row
 
 
+def describe_cube_rotation(matrix):
+    """Names a cube rotation given row-major as 9 integers: 'I', or its angle and axis, e.g.
+    '90(z)' or '120(x+y+z)'."""
+    r = [[int(round(matrix[3 * i + j])) for j in range(3)] for i in range(3)]
+    trace = r[0][0] + r[1][1] + r[2][2]
+    if trace == 3:
+        return "I"
+    angle = {1: 90, 0: 120, -1: 180}[trace]
+    if angle == 180:
+        # R + I = 2 a a^T: any non-zero column gives the axis.
+        column = max(([r[i][j] + (i == j) for i in range(3)] for j in range(3)),
+                     key=lambda c: sum(abs(v) for v in c))
+        axis = column if next(v for v in column if v != 0) > 0 else [-v for v in column]
+    else:
+        # The skew part of R is sin(angle) [a]_x.
+        axis = [r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]]
+    terms = [("+" if v > 0 else "-") + "xyz"[i] for i, v in enumerate(axis) if v != 0]
+    return "%d(%s)" % (angle, "".join(terms).lstrip("+"))
+
+
 def diagonal_of(data):
     bounds = data.GetBounds()
     return sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
@@ -241,7 +261,7 @@ def main():
 
     columns = ["model", "input", "tets", "boundary tris", "read s", "tetgen s", "beta_1", "cuts",
                "cut areas / d^2", "cut s", "frame s", "align deg", "singular", "max depth",
-               "non-identity transitions"]
+               "transitions"]
     hex_columns = ["model", "guidance", "tets", "polycube s", "corners", "inverted tets",
                    "residual", "target", "rounding inverted tets", "hexes", "SJ min/mean",
                    "dist mean/H", "inverted hexes", "valid", "hex s", "SJ min/mean smooth",
