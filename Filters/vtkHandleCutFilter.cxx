@@ -9,11 +9,14 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -40,6 +43,76 @@ vtkSmartPointer<vtkIntArray> FourIntArray(const char* name, const polycubehex::T
     }
   }
   return array;
+}
+
+/// The tets the cuts refer to, with the input's data. Without subdivision: the input itself.
+/// With it: every tet copies its parent's cell data, and a new point (a split edge's midpoint)
+/// gets the point data interpolated from the input points it is the mean of. `OriginalCellId`
+/// is added unless the input has one already (it then names an earlier ancestor, DESIGN.md).
+void AttachMesh(vtkUnstructuredGrid* input,
+  const polycubehex::HandleCutResult& result,
+  vtkUnstructuredGrid* output)
+{
+  const vtkIdType cellCount = static_cast<vtkIdType>(result.OriginalCellId.size());
+  if (result.SubdivisionRounds == 0)
+  {
+    output->ShallowCopy(input);
+  }
+  else
+  {
+    output->ShallowCopy(polycubehex::ToUnstructuredGrid(result.Mesh));
+    vtkPointData* inPoints = input->GetPointData();
+    vtkPointData* outPoints = output->GetPointData();
+    const vtkIdType inputPoints = input->GetNumberOfPoints();
+    const vtkIdType pointCount = result.Mesh.Vertices.rows();
+    outPoints->InterpolateAllocate(inPoints, pointCount);
+    // Each point as weights over input points; a midpoint's parents precede it.
+    std::vector<std::vector<std::pair<vtkIdType, double>>> weights(pointCount);
+    vtkNew<vtkIdList> ids;
+    std::vector<double> w;
+    for (vtkIdType v = 0; v < pointCount; ++v)
+    {
+      if (v < inputPoints)
+      {
+        weights[v] = { { v, 1.0 } };
+        outPoints->CopyData(inPoints, v, v);
+        continue;
+      }
+      for (int parent : result.MidpointParents[v - inputPoints])
+      {
+        for (const auto& term : weights[parent])
+        {
+          weights[v].emplace_back(term.first, 0.5 * term.second);
+        }
+      }
+      ids->Reset();
+      w.clear();
+      for (const auto& term : weights[v])
+      {
+        ids->InsertNextId(term.first);
+        w.push_back(term.second);
+      }
+      outPoints->InterpolatePoint(inPoints, v, ids, w.data());
+    }
+    vtkCellData* inCells = input->GetCellData();
+    vtkCellData* outCells = output->GetCellData();
+    outCells->CopyAllocate(inCells, cellCount);
+    for (vtkIdType t = 0; t < cellCount; ++t)
+    {
+      outCells->CopyData(inCells, result.OriginalCellId[t], t);
+    }
+  }
+  if (!output->GetCellData()->HasArray(names::OriginalCellId))
+  {
+    vtkNew<vtkIdTypeArray> originalCellId;
+    originalCellId->SetName(names::OriginalCellId);
+    originalCellId->SetNumberOfTuples(cellCount);
+    for (vtkIdType t = 0; t < cellCount; ++t)
+    {
+      originalCellId->SetValue(t, result.OriginalCellId[t]);
+    }
+    output->GetCellData()->AddArray(originalCellId);
+  }
 }
 } // namespace
 
@@ -77,6 +150,7 @@ int vtkHandleCutFilter::RequestData(
   params.MatchedCuts = this->MatchedCuts;
   params.RecomputeEachStep = this->RecomputeEachStep;
   params.MaxMinCutRounds = this->MaxMinCutRounds;
+  params.MaxSubdivisionRounds = this->MaxSubdivisionRounds;
   auto progress = [this](double fraction) {
     this->UpdateProgress(fraction);
     return !this->CheckAbort();
@@ -89,8 +163,9 @@ int vtkHandleCutFilter::RequestData(
     return 0;
   }
 
-  // 4. Attach the outputs: the same tets with the cut arrays, the cut surfaces, the loops.
-  output->ShallowCopy(input);
+  // 4. Attach the outputs: the tets (subdivided where a cut needed it) with the cut arrays, the
+  //    cut surfaces, the loops.
+  AttachMesh(input, result, output);
   output->GetCellData()->AddArray(FourIntArray(names::CutFaces, result.CutFaces));
   output->GetCellData()->AddArray(FourIntArray(names::CutSide, result.CutSide));
   vtkNew<vtkFieldData> fields;
@@ -113,6 +188,10 @@ int vtkHandleCutFilter::RequestData(
     areas->InsertNextValue(cut.Area);
   }
   fields->AddArray(areas);
+  vtkNew<vtkIntArray> subdivided;
+  subdivided->SetName("SubdividedTetCount");
+  subdivided->InsertNextValue(result.SubdividedTetCount);
+  fields->AddArray(subdivided);
   output->SetFieldData(fields);
 
   vtkNew<vtkCellArray> triangles;
@@ -126,8 +205,10 @@ int vtkHandleCutFilter::RequestData(
     for (const auto& face : result.Cuts[c].Faces)
     {
       const int* local = TetFaces[face[1]];
-      const vtkIdType ids[3] = { mesh.Cells(face[0], local[0]), mesh.Cells(face[0], local[1]),
-        mesh.Cells(face[0], local[2]) };
+      const polycubehex::Tets& cells = result.Mesh.Cells;
+      const vtkIdType ids[3] = {
+        cells(face[0], local[0]), cells(face[0], local[1]), cells(face[0], local[2])
+      };
       triangles->InsertNextCell(3, ids);
       surfaceCutId->InsertNextValue(static_cast<int>(c));
     }
@@ -142,10 +223,10 @@ int vtkHandleCutFilter::RequestData(
       loopCutId->InsertNextValue(static_cast<int>(c));
     }
   }
-  surfaces->SetPoints(input->GetPoints());
+  surfaces->SetPoints(output->GetPoints());
   surfaces->SetPolys(triangles);
   surfaces->GetCellData()->AddArray(surfaceCutId);
-  loops->SetPoints(input->GetPoints());
+  loops->SetPoints(output->GetPoints());
   loops->SetLines(polylines);
   loops->GetCellData()->AddArray(loopCutId);
   return 1;
@@ -157,4 +238,5 @@ void vtkHandleCutFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MatchedCuts: " << this->MatchedCuts << "\n";
   os << indent << "RecomputeEachStep: " << this->RecomputeEachStep << "\n";
   os << indent << "MaxMinCutRounds: " << this->MaxMinCutRounds << "\n";
+  os << indent << "MaxSubdivisionRounds: " << this->MaxSubdivisionRounds << "\n";
 }

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HandleCuts.h"
 
-#include "DisjointSets.h"
 #include "CutMesh.h"
 #include "CutMinimize.h"
 #include "CutRepair.h"
+#include "CutSubdivision.h"
 #include "CutSurface.h"
+#include "DisjointSets.h"
 #include "TetGeometry.h"
 #include "TopologyAdjacency.h"
 #include "TopologyBoundary.h"
@@ -253,12 +254,14 @@ bool TryCandidates(const CutState& state,
   }
   return false;
 }
-} // namespace
 
-Status ComputeHandleCuts(const TetMesh& mesh,
+/// The cuts of `mesh` without subdivision. When a step finds no valid cut, `failedNear` receives
+/// one flag per vertex of `mesh`: the vertices of that step's candidates.
+Status ComputeCutsOnMesh(const TetMesh& mesh,
   const HandleCutParameters& params,
   HandleCutResult& result,
-  const Progress& progress)
+  const Progress& progress,
+  std::vector<char>& failedNear)
 {
   result = HandleCutResult();
   const int tetCount = static_cast<int>(mesh.Cells.rows());
@@ -489,7 +492,18 @@ Status ComputeHandleCuts(const TetMesh& mesh,
       {
         message << "; the smallest was rejected: " << rejected;
       }
-      message << ". Refining the tet mesh near the handle may help (tets are not subdivided).";
+      failedNear.assign(mesh.Vertices.rows(), 0);
+      for (const Candidate& failed : candidates)
+      {
+        for (const CutFaceEntry& entry : failed.Faces)
+        {
+          const auto& first = adjacency.InteriorFaces[entry.Face];
+          for (int i = 0; i < 3; ++i)
+          {
+            failedNear[state.ToOriginal[state.Cells(first[0], TetFaceTable[first[1]][i])]] = 1;
+          }
+        }
+      }
       return Status::Failure(message.str());
     }
 
@@ -554,6 +568,85 @@ Status ComputeHandleCuts(const TetMesh& mesh,
   result.CutMeshOriginalVertex = state.ToOriginal;
   result.Beta1After = state.Boundary.Beta1;
   return Status::Success();
+}
+} // namespace
+
+Status ComputeHandleCuts(const TetMesh& mesh,
+  const HandleCutParameters& params,
+  HandleCutResult& result,
+  const Progress& progress)
+{
+  // Round 0 runs on the input itself, so a mesh that needs no subdivision gives the same cuts
+  // as without this loop. Each later round restarts on the refined mesh: the cuts found before
+  // the failing step may not be the best ones once the mesh is finer.
+  TetMesh refined;
+  std::vector<int> originalCell(mesh.Cells.rows());
+  std::iota(originalCell.begin(), originalCell.end(), 0);
+  std::vector<std::array<int, 2>> midpointParents;
+  int splitEdges = 0;
+  for (int round = 0;; ++round)
+  {
+    const TetMesh& current = round == 0 ? mesh : refined;
+    std::vector<char> failedNear;
+    Status status = ComputeCutsOnMesh(current, params, result, progress, failedNear);
+    std::vector<std::array<int, 2>> edges;
+    if (!status && !failedNear.empty() && round < params.MaxSubdivisionRounds)
+    {
+      TetAdjacency adjacency;
+      if (BuildTetAdjacency(static_cast<int>(current.Vertices.rows()), current.Cells, adjacency))
+      {
+        edges = BoundaryChordEdges(adjacency, failedNear);
+        if (edges.empty())
+        {
+          edges = BoundaryChordEdges(adjacency, {});
+        }
+      }
+    }
+    if (edges.empty())
+    {
+      if (!status && !failedNear.empty())
+      {
+        std::ostringstream message;
+        message << status.Message();
+        if (params.MaxSubdivisionRounds == 0)
+        {
+          message << ". Refining the tet mesh near the handle may help (MaxSubdivisionRounds = 0:"
+                     " tets are not subdivided).";
+        }
+        else
+        {
+          message << ", after " << round << " subdivision round(s) that split " << splitEdges
+                  << " edges"
+                  << (round < params.MaxSubdivisionRounds
+                         ? "; no interior edge joins two boundary vertices any more."
+                         : "; more rounds (MaxSubdivisionRounds) may help.");
+        }
+        return Status::Failure(message.str());
+      }
+      if (status)
+      {
+        result.Mesh = current;
+        result.OriginalCellId = originalCell;
+        result.MidpointParents = midpointParents;
+        result.SubdivisionRounds = round;
+        result.SplitEdgeCount = splitEdges;
+        std::vector<int> children(mesh.Cells.rows(), 0);
+        for (int parent : originalCell)
+        {
+          ++children[parent];
+        }
+        result.SubdividedTetCount = static_cast<int>(
+          std::count_if(children.begin(), children.end(), [](int c) { return c > 1; }));
+      }
+      return status;
+    }
+    if (round == 0)
+    {
+      refined = mesh;
+    }
+    splitEdges += static_cast<int>(edges.size());
+    SubdivideEdges(refined, edges, originalCell, midpointParents);
+  }
 }
 
 } // namespace polycubehex

@@ -26,9 +26,13 @@
 // Least-area is meant within the class and relative to the boundary of M_k, so a later cut may
 // end on earlier cuts; with voids the first cut of a hollow torus is an annulus from the outer
 // to the inner surface, the second a disk crossing it. The result does not depend on the scale
-// of the input (capacities are areas relative to the largest face). No tet is subdivided: a
-// solid whose faces admit no proper cut (for example a handle one tet thick where every
-// candidate touches the boundary at a vertex inside the cut) is reported as a failure.
+// of the input (capacities are areas relative to the largest face).
+//
+// Subdivision: when a step finds no valid cut (for example in a handle one tet thick, where every
+// candidate touches the boundary at a vertex inside the cut), the interior edges joining two
+// boundary vertices near that step's candidates are split at their midpoints (CutSubdivision)
+// and the computation restarts on the refined mesh, at most MaxSubdivisionRounds times. A mesh
+// that needs no subdivision is not touched and gets the same cuts as with 0 rounds.
 #pragma once
 
 #include "MeshTypes.h"
@@ -70,6 +74,9 @@ struct HandleCutParameters
   /// least-area surface is one connected surface through both summands, so that the smaller
   /// summand would otherwise never be a candidate.
   bool ReduceBasis = true;
+  /// When a step finds no valid cut: rounds of splitting interior edges between two boundary
+  /// vertices near the failed candidates, each followed by a restart (>= 0). 0 fails instead.
+  int MaxSubdivisionRounds = 2;
 };
 
 /// One cut.
@@ -77,13 +84,14 @@ struct HandleCut
 {
   /// Its faces: (minus-side tet, local face); the plus-side tet is the neighbour across it.
   std::vector<std::array<int, 2>> Faces;
-  /// Its boundary loops (handle loops) as closed polylines of input vertex ids, first vertex not
+  /// Its boundary loops (handle loops) as closed polylines of vertex ids of Mesh (an input
+  /// vertex keeps its id; split-edge midpoints follow the input's vertices), first vertex not
   /// repeated; oriented as the boundary of the cut seen with normals from minus to plus side
   /// (for positively oriented tets).
   std::vector<std::vector<int>> Loops;
   double Area = 0.0;
   int EulerCharacteristic = 0; ///< of the cut surface: 1 for a disk, 0 for an annulus
-  /// Interior edges of the input where this cut ends on an earlier cut from one side only
+  /// Interior edges of Mesh where this cut ends on an earlier cut from one side only
   /// (section 5.3); 0 when the cut crosses earlier cuts or stays apart from them.
   int MismatchedEdgeCount = 0;
   int Beta1Before = 0; ///< beta_1 of the mesh cut by the earlier cuts
@@ -94,18 +102,31 @@ struct HandleCutResult
 {
   int Beta1 = 0;                  ///< beta_1 of the input
   std::vector<int> BoundaryGenus; ///< genus of each boundary component of the input
-  /// #T by 4: cut id of local face k of tet t, -1 if none; both tets of a cut face carry it.
+  /// The mesh the cuts refer to: the input, or the input with some tets subdivided. Its first
+  /// #V vertices are the input's; the midpoints of split edges follow. Tet t keeps id t for one
+  /// of its halves; the other children are appended.
+  TetMesh Mesh;
+  /// #T' (Mesh's tets): the input tet each tet of Mesh lies in (the identity without subdivision).
+  std::vector<int> OriginalCellId;
+  /// Per vertex of Mesh after the input's (vertex #V + i is entry i): the two vertices whose
+  /// midpoint it is (either may itself be a midpoint, of a smaller id).
+  std::vector<std::array<int, 2>> MidpointParents;
+  int SubdivisionRounds = 0;  ///< rounds of refinement that were needed (0: Mesh is the input)
+  int SplitEdgeCount = 0;     ///< edges split in all rounds
+  int SubdividedTetCount = 0; ///< input tets with more than one child in Mesh
+  /// #T' by 4 (Mesh's tets): cut id of local face k of tet t, -1 if none; both tets of a cut
+  /// face carry it.
   Tets CutFaces;
-  /// #T by 4: -1 on the minus side of a cut face, +1 on the plus side, 0 elsewhere.
+  /// #T' by 4: -1 on the minus side of a cut face, +1 on the plus side, 0 elsewhere.
   Tets CutSide;
   std::vector<HandleCut> Cuts;
-  /// The cut mesh M_c: the input tets on vertices split along every cut (same tet ids and
-  /// local order), with positions, and per vertex the input vertex it copies.
+  /// The cut mesh M_c: Mesh's tets on vertices split along every cut (same tet ids and local
+  /// order), with positions, and per vertex the vertex of Mesh it copies.
   TetMesh CutMesh;
   std::vector<int> CutMeshOriginalVertex;
   int Beta1After = 0; ///< beta_1 of M_c (0), both counts agreeing
-  /// Diagnostics: minimum cuts computed, classes minimised, repair moves made, candidate
-  /// surfaces examined and rejected.
+  /// Diagnostics of the last round: minimum cuts computed, classes minimised, repair moves
+  /// made, candidate surfaces examined and rejected.
   int MinCutCount = 0;
   int ClassCount = 0;
   int RepairMoveCount = 0;
@@ -115,7 +136,8 @@ struct HandleCutResult
 
 /// Computes the cuts. Fails when the boundary of the input is not a closed 2-manifold (naming
 /// the edge or vertex), when the two beta_1 counts disagree, or when no valid cut is found at a
-/// step (naming the step and the best candidate's problem).
+/// step even after MaxSubdivisionRounds rounds of subdivision (naming the step and the best
+/// candidate's problem).
 /// @param progress  fraction done after each cut; returning false aborts
 Status ComputeHandleCuts(const TetMesh& mesh,
   const HandleCutParameters& params,

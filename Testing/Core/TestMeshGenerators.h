@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Solids and surfaces generated for the core tests (header-only, shared so that each generator
-// is written once): swept solid and hollow tori, icospheres, tori, single and glued tets, and
-// the merge of two surfaces, plus two small helpers used with them.
+// is written once): swept solid and hollow tori, a torus one tet thick, icospheres, tori, single
+// and glued tets, and the merge of two surfaces, plus two small helpers used with them.
 #pragma once
 
 #include "MeshTypes.h"
@@ -147,6 +147,45 @@ inline TetMesh SweptTorus(double R, double r, int first, int last, int stations)
       SplitPrism({ s * p + t[0], s * p + t[1], s * p + t[2] },
         { next * p + t[0], next * p + t[1], next * p + t[2] },
         tets);
+    }
+  }
+  mesh.Cells.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (size_t t = 0; t < tets.size(); ++t)
+  {
+    mesh.Cells.row(t) << tets[t][0], tets[t][1], tets[t][2], tets[t][3];
+    if (polycubehex::TetSignedVolume(mesh.Vertices, mesh.Cells, static_cast<int>(t)) < 0.0)
+    {
+      std::swap(mesh.Cells(t, 0), mesh.Cells(t, 1));
+    }
+  }
+  return mesh;
+}
+
+/// A solid torus one tet thick: a regular `sides`-gon of radius r, fan-triangulated from its
+/// first corner (no vertex inside), swept around the z axis at distance R in `stations` steps.
+/// Every vertex lies on the boundary.
+inline TetMesh ThinTorus(double R, double r, int sides, int stations)
+{
+  TetMesh mesh;
+  mesh.Vertices.resize(static_cast<Eigen::Index>(sides) * stations, 3);
+  for (int s = 0; s < stations; ++s)
+  {
+    const double phi = 2.0 * Pi * s / stations;
+    for (int i = 0; i < sides; ++i)
+    {
+      const double v = 2.0 * Pi * i / sides;
+      mesh.Vertices.row(s * sides + i) << (R + r * std::cos(v)) * std::cos(phi),
+        (R + r * std::cos(v)) * std::sin(phi), r * std::sin(v);
+    }
+  }
+  std::vector<std::array<int, 4>> tets;
+  for (int s = 0; s < stations; ++s)
+  {
+    const int a = s * sides;
+    const int b = ((s + 1) % stations) * sides;
+    for (int i = 1; i + 1 < sides; ++i)
+    {
+      SplitPrism({ a, a + i, a + i + 1 }, { b, b + i, b + i + 1 }, tets);
     }
   }
   mesh.Cells.resize(static_cast<Eigen::Index>(tets.size()), 4);

@@ -96,6 +96,24 @@ int main(int argc, char* argv[])
     std::cout << model.first << ": beta_1 " << (betti ? betti->GetTuple1(0) : -1) << ", "
               << cutCount << " cut(s)\n";
     PCH_CHECK(cutCount == model.second);
+    // No subdivision here: the same tets, OriginalCellId the identity, the input's arrays kept.
+    vtkDataArray* subdivided =
+      vtkDataArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("SubdividedTetCount"));
+    PCH_CHECK(subdivided && subdivided->GetTuple1(0) == 0);
+    vtkUnstructuredGrid* cutInput = tets->GetOutput();
+    PCH_CHECK(output->GetNumberOfCells() == cutInput->GetNumberOfCells());
+    vtkDataArray* originalCellId = output->GetCellData()->GetArray("OriginalCellId");
+    PCH_CHECK(originalCellId && originalCellId->GetNumberOfTuples() == output->GetNumberOfCells());
+    bool identity = originalCellId != nullptr;
+    for (vtkIdType t = 0; identity && t < output->GetNumberOfCells(); ++t)
+    {
+      identity = originalCellId->GetTuple1(t) == t;
+    }
+    PCH_CHECK(identity);
+    for (int a = 0; a < cutInput->GetCellData()->GetNumberOfArrays(); ++a)
+    {
+      PCH_CHECK(output->GetCellData()->GetArray(cutInput->GetCellData()->GetArrayName(a)));
+    }
     vtkPolyData* surfaces = vtkPolyData::SafeDownCast(cuts->GetOutputDataObject(1));
     vtkPolyData* loops = vtkPolyData::SafeDownCast(cuts->GetOutputDataObject(2));
     PCH_CHECK((surfaces->GetNumberOfPolys() > 0) == (model.second > 0));
