@@ -23,6 +23,8 @@ from vtkmodules.vtkIOXML import (vtkXMLPolyDataReader, vtkXMLUnstructuredGridRea
 from .PolycubeHexFilters import (vtkFrameFieldFilter, vtkHandleCutFilter, vtkHexExtractFilter,
                                  vtkMeditReader, vtkMeditWriter, vtkOFFReader,
                                  vtkPolycubeDeformFilter, vtkTetrahedralizeFilter)
+# The report's table lives in .report (pure Python); re-exported here for existing callers.
+from .report import REPORT_FIELDS, format_report  # noqa: F401
 
 SURFACE_READERS = {".obj": vtkOBJReader, ".stl": vtkSTLReader, ".ply": vtkPLYReader,
                    ".off": vtkOFFReader, ".vtp": vtkXMLPolyDataReader}
@@ -31,12 +33,6 @@ VOLUME_READERS = {".mesh": vtkMeditReader, ".vtk": vtkUnstructuredGridReader,
 WRITERS = {".vtu": vtkXMLUnstructuredGridWriter, ".vtk": vtkUnstructuredGridWriter,
            ".mesh": vtkMeditWriter}
 GUIDANCE = {"automatic": 0, "framefield": 1, "uniform": 2}
-
-# The quality measures of DESIGN.md section 4, in the order the report prints them.
-REPORT_FIELDS = ["HexCount", "PaddingHexCount", "ScaledJacobianMin", "ScaledJacobianMean",
-                 "InvertedHexCount", "ValidHexMesh", "IrregularBoundaryVertexCount",
-                 "DistanceMean", "DistanceHausdorff", "CornerCount", "BettiNumber",
-                 "PolycubeResidual", "Guidance", "RoundingInvertedTetCount"]
 
 
 class PipelineError(RuntimeError):
@@ -169,16 +165,3 @@ def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=
             report[name] = value.ToString() if value.IsString() else value.ToDouble()
     return hexes, report
 
-
-def format_report(report):
-    """The quality table as Markdown lines."""
-    lines = ["| measure | value |", "|---|---|", "| tets | %d |" % report["tets"]]
-    for name in REPORT_FIELDS:
-        if name in report:
-            value = report[name]
-            text = value if isinstance(value, str) else (
-                "%d" % value if float(value).is_integer() else "%.4g" % value)
-            lines.append("| %s | %s |" % (name, text))
-    for stage, value in report["seconds"].items():
-        lines.append("| seconds: %s | %.2f |" % (stage, value))
-    return "\n".join(lines)
