@@ -62,6 +62,7 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=[1000, 750])
     args = parser.parse_args()
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    from polycubehex.pipeline import ErrorCatcher
     from polycubehex.report import REPORT_FIELDS, format_report, write_report
     from polycubehex.visualization import show_frame_glyphs, white_view
 
@@ -69,11 +70,16 @@ def main():
     os.makedirs(out, exist_ok=True)
     name = os.path.splitext(os.path.basename(args.model))[0]
     seconds = {}
+    warnings = []
 
     def run(stage, proxy):
+        # pvbatch runs the filters in this process: their warnings (why ValidHexMesh is 0, say)
+        # are caught from the VTK objects and go into the report, not only to the terminal.
+        catcher = ErrorCatcher(proxy.GetClientSideObject())
         start = time.perf_counter()
         proxy.UpdatePipeline()
         seconds[stage] = time.perf_counter() - start
+        warnings.extend("%s: %s" % (stage, w) for w in catcher.warnings + catcher.errors)
         return proxy
 
     source = simple.OpenDataFile(args.model)
@@ -146,7 +152,7 @@ def main():
     view.CameraFocalPoint = [0, 0, 0]
     view.CameraViewUp = [0, 0, 1]
     pictures.append(("Hex mesh (§4.3): the boundary hexes with their edges, coloured by scaled"
-                     " Jacobian (1 = a perfect cube, red at or below 0 = inverted)",
+                     " Jacobian (blue 1 = a perfect cube, red at or below 0 = inverted)",
                      save(view, out, name + "_hexes.png", args.size)))
 
     hex_bounds = hexes.GetDataInformation().GetBounds()
@@ -183,6 +189,7 @@ def main():
     report = field_values(hexes, REPORT_FIELDS)
     report["tets"] = tets.GetDataInformation().GetNumberOfCells()
     report["seconds"] = seconds
+    report["warnings"] = warnings
     table = format_report(report)
     settings = {"target hexes": args.hexes, "run in": "pvbatch with the PolycubeHex plugin",
                 "outputs": "%s_hexes.vtu, %s_hexes.mesh" % (name, name)}

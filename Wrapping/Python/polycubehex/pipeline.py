@@ -39,7 +39,7 @@ class PipelineError(RuntimeError):
     """A stage refused its input; the message is the stage's own."""
 
 
-class _ErrorCatcher:
+class ErrorCatcher:
     """Collects the messages of a VTK algorithm's ErrorEvent and WarningEvent."""
 
     def __init__(self, algorithm):
@@ -66,7 +66,7 @@ class _ErrorCatcher:
 
 def _run(stage, algorithm, data, progress, warnings):
     """Runs one stage on `data`; returns a copy of its output port 0."""
-    catcher = _ErrorCatcher(algorithm)
+    catcher = ErrorCatcher(algorithm)
     if progress is not None:
         algorithm.AddObserver(vtkCommand.ProgressEvent,
                               lambda caller, event: progress(stage, caller.GetProgress()))
@@ -108,7 +108,7 @@ def write(grid, path):
     writer = WRITERS[extension]()
     writer.SetFileName(path)
     writer.SetInputData(grid)
-    catcher = _ErrorCatcher(writer)
+    catcher = ErrorCatcher(writer)
     if not writer.Write() or catcher.errors:
         raise PipelineError("write: %s" % (catcher.errors[0] if catcher.errors else path))
 
