@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The polycubehex command line and polycubehex.mesh(): a torus surface to a valid hex mesh file
-near the requested count, with the quality table printed; bad input (a missing file, a file that
+near the requested count, with the quality table printed and written as Markdown or as an HTML
+page (well-formed, its hex count that of the written mesh); bad input (a missing file, a file that
 is not what its name says, an unknown output format) exits with status 1 and a readable message
 instead of a traceback."""
+import html.parser
 import os
 import subprocess
 import sys
@@ -40,6 +42,64 @@ assert abs(grid.GetNumberOfCells() - 2000) <= 200, grid.GetNumberOfCells()
 assert all(grid.GetCellType(c) == 12 for c in range(grid.GetNumberOfCells()))  # VTK_HEXAHEDRON
 with open(report_file) as report:
     assert "ScaledJacobianMin" in report.read()
+
+
+
+class ReportParser(html.parser.HTMLParser):
+    """Checks that every element is closed in order and collects the quality table's rows."""
+    VOID = {"meta", "img", "br", "hr", "link", "input"}
+
+    def __init__(self):
+        super().__init__()
+        self.stack, self.rows, self.text, self.table = [], [], [], None
+
+    def handle_starttag(self, tag, attrs):
+        if tag not in self.VOID:
+            self.stack.append(tag)
+        if tag == "table":
+            self.table = dict(attrs).get("class")
+        if tag == "tr":
+            self.row = []
+        if tag == "td":
+            self.text = []
+
+    def handle_endtag(self, tag):
+        assert self.stack and self.stack[-1] == tag, "</%s> closes %s" % (tag, self.stack)
+        self.stack.pop()
+        if tag == "td":
+            self.row.append("".join(self.text).strip())
+        if tag == "tr" and self.table == "quality" and self.row:
+            self.rows.append(tuple(self.row))
+
+    def handle_data(self, data):
+        self.text.append(data)
+
+
+def read_cells(path):
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput().GetNumberOfCells()
+
+
+# --report with .html writes one HTML page whose table matches the written mesh.
+html_hexes = os.path.join(output_dir, "cli_torus_html.vtu")
+html_file = os.path.join(output_dir, "cli_torus.html")
+code, out, err = run(os.path.join(data, "torus.obj"), "-o", html_hexes, "--hexes", "800",
+                     "--report", html_file)
+assert code == 0, err
+with open(html_file, encoding="utf-8") as page:
+    text = page.read()
+assert text.startswith("<!DOCTYPE html>"), text[:100]
+parser = ReportParser()
+parser.feed(text)
+parser.close()
+assert not parser.stack, "unclosed elements: %s" % parser.stack
+table = dict(parser.rows)
+print("HTML report rows:", table)
+assert int(table["HexCount"]) == read_cells(html_hexes), (table, read_cells(html_hexes))
+assert table["ValidHexMesh"] == "1" and "ScaledJacobianMin" in table
+assert "torus.obj" in text and "target hexes" in text
 
 # Refusals: status 1, one readable line, no traceback, no output file.
 bad = os.path.join(output_dir, "cli_not_an_off.off")

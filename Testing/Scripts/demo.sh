@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The main job: installs the Debian packages, builds, and meshes a bundled model end to end
 # (tets, cuts, frame field, polycube, hexes) in ParaView's pvbatch under Xvfb. Writes into
-# build/demo/: the hex mesh (.vtu and MEDIT .mesh), report.md with the quality table, and a
-# picture per stage (cuts, frame field, polycube, hexes by scaled Jacobian, a slice, the
-# histogram).
+# build/demo/: the hex mesh (.vtu and MEDIT .mesh), report.md and report.html with the quality
+# table, and a picture per stage (cuts, frame field, polycube, hexes by scaled Jacobian, a slice,
+# the histogram).
 # Usage: demo.sh [model, default Data/rockerarm.mesh] [target hexes, default 24346 = the
 #        paper's l1 count for rockerarm]
 set -euo pipefail
@@ -18,4 +18,4 @@ PYTHONPATH="$(dirname "$python_dir")${PYTHONPATH:+:$PYTHONPATH}" \
   "$source_dir/Wrapping/Python/examples/demo_report.py" \
   "${1:-$source_dir/Data/rockerarm.mesh}" --hexes "${2:-24346}" --output-dir "$build_dir/demo" \
   --plugin "$build_dir/lib/paraview-5.11/plugins/PolycubeHex/PolycubeHex.so"
-echo "Open $build_dir/demo/report.md (the pictures are beside it)."
+echo "Open $build_dir/demo/report.html in a browser, or report.md (the pictures are beside them)."

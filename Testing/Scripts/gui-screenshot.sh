@@ -3,6 +3,10 @@
 # screenshot of the whole screen: what a user sees. Usage: gui-screenshot.sh <model> <out.png>
 # With POLYCUBEHEX_GUI_PIPELINE=1 the GUI loads the Python state
 # Wrapping/Python/examples/pipeline_state.py instead: the whole pipeline on <model>.
+# With POLYCUBEHEX_GUI_PIPELINE=pvsm it does what the README tells a user: from the repository's
+# top, PV_PLUGIN_PATH=<plugin dir> \
+#   paraview --state=Wrapping/Python/examples/polycubehex_pipeline.pvsm
+# (the XML state, on Data/torus.obj; <model> is ignored).
 set -euo pipefail
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="${POLYCUBEHEX_BUILD:-$source_dir/build}"
@@ -31,12 +35,26 @@ from paraview.simple import Render
 Render()
 PY
 fi
+start="--script=$work/load.py"
+if [ "${POLYCUBEHEX_GUI_PIPELINE:-0}" = pvsm ]; then
+  # The state names Data/torus.obj relative to the repository's top, and needs the plugin loaded
+  # before it: PV_PLUGIN_PATH loads it at start-up.
+  cd "$source_dir"
+  export PV_PLUGIN_PATH="$(dirname "$plugin")"
+  start="--state=Wrapping/Python/examples/polycubehex_pipeline.pvsm"
+fi
+# A settings directory of its own, without the welcome dialog: under Xvfb (no window manager)
+# that modal dialog hides behind the main window and stalls loading a .pvsm until it is closed.
+mkdir -p "$work/home/.config/ParaView"
+printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\n' \
+  > "$work/home/.config/ParaView/ParaView5.11.0.ini"
+export HOME="$work/home" XDG_CONFIG_HOME="$work/home/.config"
 cat > "$work/run.sh" <<SH
-paraview --script="$work/load.py" > "$work/paraview.log" 2>&1 &
+paraview "$start" > "$work/paraview.log" 2>&1 &
 sleep "\${POLYCUBEHEX_GUI_WAIT:-20}"
 xwd -root -silent > "$work/screen.xwd"
 convert "$work/screen.xwd" "$output"
 kill %1 || true
 SH
 xvfb-run -a -s "-screen 0 1400x900x24" bash "$work/run.sh"
-echo "wrote $output"
+echo "wrote $output (ParaView's messages: $work/paraview.log)"

@@ -1,14 +1,15 @@
 #!/usr/bin/env pvbatch
 # SPDX-License-Identifier: BSD-3-Clause
-"""The whole pipeline on one model in ParaView, with a Markdown report and a picture per stage:
+"""The whole pipeline on one model in ParaView, with a report (Markdown and HTML) and a picture
+per stage:
 the cuts with their handle loops, the frame field, the labelled polycube, the hex mesh coloured
 by scaled Jacobian, a slice through it, and the scaled Jacobian histogram.
 
     xvfb-run -a pvbatch demo_report.py Data/rockerarm.mesh --output-dir build/demo \\
         --plugin build/lib/paraview-5.11/plugins/PolycubeHex/PolycubeHex.so --hexes 24346
 
-with the build tree's python package on PYTHONPATH. Writes report.md, <model>_hexes.vtu and
-<model>_hexes.mesh, and the PNGs beside them.
+with the build tree's python package on PYTHONPATH. Writes report.md, report.html (one page that
+shows the PNGs beside it), <model>_hexes.vtu and <model>_hexes.mesh, and the PNGs.
 """
 import argparse
 import os
@@ -61,18 +62,24 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=[1000, 750])
     args = parser.parse_args()
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    from polycubehex.pipeline import REPORT_FIELDS, format_report
+    from polycubehex.pipeline import ErrorCatcher
+    from polycubehex.report import REPORT_FIELDS, format_report, write_report
     from polycubehex.visualization import show_frame_glyphs, white_view
 
     out = args.output_dir
     os.makedirs(out, exist_ok=True)
     name = os.path.splitext(os.path.basename(args.model))[0]
     seconds = {}
+    warnings = []
 
     def run(stage, proxy):
+        # pvbatch runs the filters in this process: their warnings (why ValidHexMesh is 0, say)
+        # are caught from the VTK objects and go into the report, not only to the terminal.
+        catcher = ErrorCatcher(proxy.GetClientSideObject())
         start = time.perf_counter()
         proxy.UpdatePipeline()
         seconds[stage] = time.perf_counter() - start
+        warnings.extend("%s: %s" % (stage, w) for w in catcher.warnings + catcher.errors)
         return proxy
 
     source = simple.OpenDataFile(args.model)
@@ -104,7 +111,8 @@ def main():
     tubes.ColorArrayName = ["POINTS", ""]
     tubes.DiffuseColor = [0, 0, 0]
     oblique(view)
-    pictures.append(("Cuts (§2): one surface per handle, the handle loops in black",
+    pictures.append(("Cuts (§2): the boundary faint, one cut surface per handle (coloured by"
+                     " CutId), the handle loops as black tubes",
                      save(view, out, name + "_cuts.png", args.size)))
 
     view = white_view(args.size)
@@ -113,7 +121,8 @@ def main():
     outline.ColorArrayName = ["POINTS", ""]
     show_frame_glyphs(frames, view)
     oblique(view)
-    pictures.append(("Frame field (§3): the three axes as red, green and blue arrows",
+    pictures.append(("Frame field (§3): the three frame axes at sample points inside the"
+                     " model, FrameU red, FrameV green, FrameW blue",
                      save(view, out, name + "_frames.png", args.size)))
 
     view = white_view(args.size)
@@ -125,7 +134,8 @@ def main():
     view.CameraPosition = [1, -1.5, 1.2]
     view.CameraFocalPoint = [0, 0, 0]
     view.CameraViewUp = [0, 0, 1]
-    pictures.append(("Polycube (§4.2): the boundary coloured by label 0..5 = +X -X +Y -Y +Z -Z",
+    pictures.append(("Polycube (§4.2): the deformed boundary, each face coloured by its label"
+                     " 0..5 = +X -X +Y -Y +Z -Z",
                      save(view, out, name + "_polycube.png", args.size)))
 
     lut = simple.GetColorTransferFunction("ScaledJacobian")
@@ -141,7 +151,8 @@ def main():
     view.CameraPosition = [1, -1.5, 1.2]
     view.CameraFocalPoint = [0, 0, 0]
     view.CameraViewUp = [0, 0, 1]
-    pictures.append(("Hex mesh (§4.3) coloured by scaled Jacobian",
+    pictures.append(("Hex mesh (§4.3): the boundary hexes with their edges, coloured by scaled"
+                     " Jacobian (blue 1 = a perfect cube, red at or below 0 = inverted)",
                      save(view, out, name + "_hexes.png", args.size)))
 
     hex_bounds = hexes.GetDataInformation().GetBounds()
@@ -157,7 +168,8 @@ def main():
     view.CameraPosition = [0, 0, 1]
     view.CameraFocalPoint = [0, 0, 0]
     view.CameraViewUp = [0, 1, 0]
-    pictures.append(("A slice through the middle (whole hexes), same colours",
+    pictures.append(("Inside: the whole hexes crossed by the mid-height plane z = const,"
+                     " seen from above, same colours",
                      save(view, out, name + "_slice.png", args.size)))
 
     histogram = simple.Histogram(Input=hexes, SelectInputArray=["CELLS", "ScaledJacobian"],
@@ -171,21 +183,20 @@ def main():
     simple.Render(chart)
     simple.SaveScreenshot(os.path.join(out, name + "_histogram.png"), chart,
                           ImageResolution=args.size)
-    pictures.append(("Scaled Jacobian histogram", name + "_histogram.png"))
+    pictures.append(("Scaled Jacobian histogram: the number of hexes per bin, 24 bins from -0.2"
+                     " to 1", name + "_histogram.png"))
 
     report = field_values(hexes, REPORT_FIELDS)
     report["tets"] = tets.GetDataInformation().GetNumberOfCells()
     report["seconds"] = seconds
+    report["warnings"] = warnings
     table = format_report(report)
-    lines = ["# PolycubeHex report: %s" % os.path.basename(args.model), "", table]
-    lines += ["", "Distances in units of 1e-3 of the bounding-box diagonal. `ValidHexMesh` 0 means"
-              " some hex is inverted or degenerate (see the warnings printed above).", ""]
-    for caption, picture in pictures:
-        lines += ["## " + caption, "", "![%s](%s)" % (caption, picture), ""]
-    with open(os.path.join(out, "report.md"), "w") as markdown:
-        markdown.write("\n".join(lines))
+    settings = {"target hexes": args.hexes, "run in": "pvbatch with the PolycubeHex plugin",
+                "outputs": "%s_hexes.vtu, %s_hexes.mesh" % (name, name)}
+    for report_name in ("report.md", "report.html"):
+        write_report(os.path.join(out, report_name), report, args.model, settings, pictures)
     print(table)
-    print("wrote %s" % os.path.join(out, "report.md"))
+    print("wrote %s and report.html" % os.path.join(out, "report.md"))
 
 
 if __name__ == "__main__":

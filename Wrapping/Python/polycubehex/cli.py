@@ -2,7 +2,7 @@
 """polycubehex: an all-hex mesh from a file, on the command line.
 
     polycubehex input.obj -o hexes.vtu [--hexes 10000] [--guidance automatic|framefield|uniform]
-                [--no-padding] [--no-smoothing] [--report report.md]
+                [--no-padding] [--no-smoothing] [--report report.md|report.html]
 
 Input: a closed surface (.obj .stl .ply .off .vtp, tetrahedralized with TetGen) or a tet mesh
 (.mesh .vtk .vtu). Output: .vtu, .vtk or MEDIT .mesh. Prints the quality table at the end.
@@ -16,6 +16,7 @@ import sys
 from vtkmodules.vtkCommonCore import vtkLogger
 
 from .pipeline import WRITERS, PipelineError, format_report, mesh, write
+from .report import write_report
 
 
 class ProgressLine:
@@ -57,7 +58,8 @@ def main(argv=None):
     parser.add_argument("--uniform", action="store_true", help="same as --guidance uniform")
     parser.add_argument("--no-padding", action="store_true", help="no padding layer")
     parser.add_argument("--no-smoothing", action="store_true", help="the raw extraction")
-    parser.add_argument("--report", help="also write the quality table to this Markdown file")
+    parser.add_argument("--report", help="also write the quality table to this file: an HTML "
+                        "page when it ends in .html, Markdown otherwise")
     parser.add_argument("--verbose", action="store_true", help="show VTK's own log lines")
     args = parser.parse_args(argv)
     if args.hexes < 1:
@@ -86,8 +88,11 @@ def main(argv=None):
     print(table)
     print("wrote %s" % os.path.abspath(args.output))
     if args.report:
-        with open(args.report, "w") as out:
-            out.write("# PolycubeHex report: %s\n\n%s\n" % (os.path.basename(args.input), table))
+        guidance = "uniform" if args.uniform else args.guidance
+        settings = {"output": args.output, "target hexes": args.hexes, "guidance": guidance,
+                    "padding": "off" if args.no_padding else "on",
+                    "smoothing": "off" if args.no_smoothing else "on"}
+        write_report(args.report, report, args.input, settings)
     if report.get("ValidHexMesh") != 1:
         # Written for inspection, but never reported as a success.
         print("polycubehex: the hex mesh is not valid (%d inverted hexes); see the warnings" %

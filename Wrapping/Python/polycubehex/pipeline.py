@@ -23,6 +23,8 @@ from vtkmodules.vtkIOXML import (vtkXMLPolyDataReader, vtkXMLUnstructuredGridRea
 from .PolycubeHexFilters import (vtkFrameFieldFilter, vtkHandleCutFilter, vtkHexExtractFilter,
                                  vtkMeditReader, vtkMeditWriter, vtkOFFReader,
                                  vtkPolycubeDeformFilter, vtkTetrahedralizeFilter)
+# The report's table lives in .report (pure Python); re-exported here for existing callers.
+from .report import REPORT_FIELDS, format_report  # noqa: F401
 
 SURFACE_READERS = {".obj": vtkOBJReader, ".stl": vtkSTLReader, ".ply": vtkPLYReader,
                    ".off": vtkOFFReader, ".vtp": vtkXMLPolyDataReader}
@@ -32,18 +34,12 @@ WRITERS = {".vtu": vtkXMLUnstructuredGridWriter, ".vtk": vtkUnstructuredGridWrit
            ".mesh": vtkMeditWriter}
 GUIDANCE = {"automatic": 0, "framefield": 1, "uniform": 2}
 
-# The quality measures of DESIGN.md section 4, in the order the report prints them.
-REPORT_FIELDS = ["HexCount", "PaddingHexCount", "ScaledJacobianMin", "ScaledJacobianMean",
-                 "InvertedHexCount", "ValidHexMesh", "IrregularBoundaryVertexCount",
-                 "DistanceMean", "DistanceHausdorff", "CornerCount", "BettiNumber",
-                 "PolycubeResidual", "Guidance", "RoundingInvertedTetCount"]
-
 
 class PipelineError(RuntimeError):
     """A stage refused its input; the message is the stage's own."""
 
 
-class _ErrorCatcher:
+class ErrorCatcher:
     """Collects the messages of a VTK algorithm's ErrorEvent and WarningEvent."""
 
     def __init__(self, algorithm):
@@ -70,7 +66,7 @@ class _ErrorCatcher:
 
 def _run(stage, algorithm, data, progress, warnings):
     """Runs one stage on `data`; returns a copy of its output port 0."""
-    catcher = _ErrorCatcher(algorithm)
+    catcher = ErrorCatcher(algorithm)
     if progress is not None:
         algorithm.AddObserver(vtkCommand.ProgressEvent,
                               lambda caller, event: progress(stage, caller.GetProgress()))
@@ -112,7 +108,7 @@ def write(grid, path):
     writer = WRITERS[extension]()
     writer.SetFileName(path)
     writer.SetInputData(grid)
-    catcher = _ErrorCatcher(writer)
+    catcher = ErrorCatcher(writer)
     if not writer.Write() or catcher.errors:
         raise PipelineError("write: %s" % (catcher.errors[0] if catcher.errors else path))
 
@@ -169,16 +165,3 @@ def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=
             report[name] = value.ToString() if value.IsString() else value.ToDouble()
     return hexes, report
 
-
-def format_report(report):
-    """The quality table as Markdown lines."""
-    lines = ["| measure | value |", "|---|---|", "| tets | %d |" % report["tets"]]
-    for name in REPORT_FIELDS:
-        if name in report:
-            value = report[name]
-            text = value if isinstance(value, str) else (
-                "%d" % value if float(value).is_integer() else "%.4g" % value)
-            lines.append("| %s | %s |" % (name, text))
-    for stage, value in report["seconds"].items():
-        lines.append("| seconds: %s | %.2f |" % (stage, value))
-    return "\n".join(lines)
