@@ -4,6 +4,7 @@
 #include "DisjointSets.h"
 #include "MemoryBudget.h"
 #include "PolycubeCharts.h"
+#include "PolycubeCutMesh.h"
 #include "PolycubeEnergy.h"
 #include "PolycubeNewton.h"
 #include "PolycubeRotation.h"
@@ -46,16 +47,26 @@ struct WorkMesh
   /// (tet centroid) ids.
   std::vector<std::vector<int>> SplitParents;
   int InputVertexCount = 0;
+  /// Closed form only (empty otherwise): the copy relations across the cuts, their transitions,
+  /// and per vertex its identity (the same for all copies of one point of the input).
+  std::vector<CopyRelation> Copies;
+  std::vector<Eigen::Matrix3i> Transitions;
+  std::vector<int> Identity;
 
   int VertexCount() const { return static_cast<int>(this->Rest.rows()); }
 };
 
-void SplitEdges(WorkMesh& mesh, const std::vector<std::array<int, 2>>& edges)
+void SplitEdges(WorkMesh& mesh, const std::vector<std::array<int, 2>>& requested)
 {
   const int n = mesh.VertexCount();
+  // On a cut mesh, an edge split on one side of a cut is split on the other too.
+  std::vector<std::array<int, 3>> partnerEdges;
+  const std::vector<std::array<int, 2>> edges =
+    MirrorEdgesAcrossCuts(requested, mesh.Copies, n, partnerEdges);
   std::vector<int> parentLocal;
   std::vector<std::array<int, 2>> parents;
   SplitTetEdges(n, mesh.Cells, edges, parentLocal, parents);
+  AddMidpointCopies(edges, partnerEdges, parents, n, mesh.Copies, mesh.Identity);
   std::vector<int> composed(parentLocal.size());
   for (size_t t = 0; t < parentLocal.size(); ++t)
   {
@@ -80,6 +91,10 @@ void SplitTets(WorkMesh& mesh, const std::vector<int>& tets)
   AppendSplitCentroids(mesh.Original, corners);
   AppendSplitCentroids(mesh.X, corners);
   mesh.OriginalPointId.resize(static_cast<size_t>(mesh.VertexCount()), -1);
+  for (int v = static_cast<int>(mesh.Identity.size()); v < mesh.VertexCount(); ++v)
+  {
+    mesh.Identity.push_back(v);
+  }
   for (const auto& c : corners)
   {
     mesh.SplitParents.push_back({ c[0], c[1], c[2], c[3] });
@@ -218,6 +233,127 @@ bool ShareOne(const std::vector<int>& a, const std::vector<int>& b)
 }
 
 
+/// ComputeTetTopology, and on a cut mesh only the boundary of the input as boundary (the faces
+/// of the cuts are not aligned, labelled or flattened).
+void RefreshTopology(const WorkMesh& mesh, TetTopology& topology)
+{
+  ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+  if (!mesh.Copies.empty())
+  {
+    KeepInputBoundary(topology, mesh.Identity);
+  }
+}
+
+/// Face adjacency of the boundary of the input: on a cut mesh, faces on the two sides of a cut's
+/// boundary loop are neighbours, so that charts run across the cuts.
+Triangles BoundaryAdjacency(const WorkMesh& mesh, const Triangles& faces)
+{
+  return mesh.Copies.empty()
+    ? ComputeFaceAdjacency(mesh.VertexCount(), faces)
+    : ComputeFaceAdjacency(mesh.VertexCount(), IdentityFaces(faces, mesh.Identity));
+}
+
+/// The variables of a cut mesh: copies related by their cut's transition with unknown
+/// translations (eq. 8), and the coordinates of `equalities` made equal (chart planes).
+Status CutReduction(const WorkMesh& mesh,
+  const std::vector<std::array<int, 2>>& equalities,
+  VariableReduction& reduction,
+  CoordinateRelations* relationsOut = nullptr)
+{
+  const int cutCount = static_cast<int>(mesh.Transitions.size());
+  std::vector<int> extraAxis(static_cast<size_t>(3 * cutCount));
+  for (int k = 0; k < 3 * cutCount; ++k)
+  {
+    extraAxis[static_cast<size_t>(k)] = k % 3;
+  }
+  CoordinateRelations relations(mesh.VertexCount(), 3 * cutCount, extraAxis);
+  AddCopyRelations(mesh.Copies, mesh.Transitions, relations);
+  for (const auto& pair : equalities)
+  {
+    relations.Relate(pair[0], pair[1], 1.0);
+  }
+  const Status status = relations.Build(reduction);
+  if (status && relationsOut != nullptr)
+  {
+    *relationsOut = relations;
+  }
+  return status;
+}
+
+/// Fang et al. eq. (7) with (8) hard, on the cut mesh: the map whose gradient best fits the
+/// frames in least squares, copies across each cut related by its transition and an unknown
+/// translation. The energy is quadratic, so one linear solve in the reduced variables gives it.
+Status FramePoissonStart(WorkMesh& mesh,
+  const TetTopology& topology,
+  const std::vector<Eigen::Matrix3d>& tetFrames,
+  PolycubeResult& out)
+{
+  std::vector<Eigen::Matrix3d> targets(static_cast<size_t>(mesh.Cells.rows()));
+  for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+  {
+    const Eigen::Matrix3d& frame =
+      tetFrames[static_cast<size_t>(mesh.ParentTet[static_cast<size_t>(t)])];
+    if (!frame.allFinite() || std::abs(frame.determinant() - 1.0) > 1e-3)
+    {
+      return Status::Failure("ComputePolycube: the frame of tet " +
+        std::to_string(mesh.ParentTet[static_cast<size_t>(t)]) + " is not a rotation");
+    }
+    targets[static_cast<size_t>(t)] = frame;
+  }
+  VariableReduction reduction;
+  Status status = CutReduction(mesh, {}, reduction);
+  if (!status)
+  {
+    return Status::Failure("ComputePolycube: " + status.Message());
+  }
+  PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
+  energy.SetTargetRotations(targets);
+  energy.SetWeights(PolycubeEnergyWeights()); // Arap (here the Poisson fit) only
+  const Eigen::VectorXd rest = Flat(mesh.Rest);
+  Eigen::VectorXd gradient(rest.size());
+  Eigen::SparseMatrix<double> hessian = energy.Pattern().ZeroMatrix();
+  PolycubeEnergyTerms terms;
+  if (!energy.EvaluateDerivatives(rest.data(), terms, gradient, &hessian))
+  {
+    return Status::Failure("ComputePolycube: the input has a non-positive tet");
+  }
+  // E(x) = E(rest) + g.(x - rest) + (x - rest)^T H (x - rest) / 2 with x = B y + c.
+  const Eigen::SparseMatrix<double> bt = reduction.B.transpose();
+  Eigen::SparseMatrix<double> normal = bt * hessian * reduction.B;
+  const double mu = 1e-10 * normal.diagonal().mean(); // fixes the free translation
+  for (int i = 0; i < normal.rows(); ++i)
+  {
+    normal.coeffRef(i, i) += mu;
+  }
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+  if (solver.info() != Eigen::Success)
+  {
+    return Status::Failure("ComputePolycube: the frame-guided Poisson system is singular");
+  }
+  const Eigen::VectorXd y =
+    solver.solve(bt * (hessian * (rest - reduction.Offset) - gradient));
+  const Eigen::VectorXd x = reduction.Expand(y);
+  const double ratio = energy.MinVolumeRatio(x.data());
+  out.InitialRotation.setIdentity();
+  if (!(ratio > 0.0))
+  {
+    int inverted = 0;
+    const Points positions = Unflat(x);
+    for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+    {
+      inverted += TetSignedVolume(positions, mesh.Cells, static_cast<int>(t)) > 0.0 ? 0 : 1;
+    }
+    return Status::Failure("ComputePolycube: the frame-guided map of the cut mesh (eq. 7 with the "
+                           "cut transitions) inverts " +
+      std::to_string(inverted) + " tets; the frame field does not describe a valid map");
+  }
+  PolycubeEnergyTerms fit;
+  energy.Evaluate(x.data(), fit);
+  out.FrameFitResidual = fit.Arap;
+  mesh.X = Unflat(x);
+  return Status::Success();
+}
+
 /// Gives the faces that the penalised flattening squeezed below `ratio` of their rest area
 /// (projected on their label's direction) the label of a neighbouring face of another label,
 /// growing inwards from the chart boundaries. Returns the number of faces relabelled.
@@ -352,7 +488,8 @@ Status ComputePolycube(const TetMesh& input,
   const PolycubeParameters& params,
   PolycubeResult& out,
   const Progress& progress,
-  const std::vector<Eigen::Matrix3d>& tetFrames)
+  const std::vector<Eigen::Matrix3d>& tetFrames,
+  const PolycubeCuts* cuts)
 {
   const auto totalStart = Clock::now();
   out = PolycubeResult();
@@ -399,8 +536,39 @@ Status ComputePolycube(const TetMesh& input,
       return Status::Failure(message.str());
     }
   }
+  // Closed form: work on the cut mesh, the copies across each cut related by its transition.
+  const bool closedForm = cuts != nullptr && cuts->Count() > 0;
+  mesh.Identity = mesh.OriginalPointId;
+  if (closedForm)
+  {
+    if (tetFrames.empty())
+    {
+      return Status::Failure("ComputePolycube: cuts need the frame field (FrameField guidance)");
+    }
+    PolycubeCutMesh cutMesh;
+    status = BuildPolycubeCutMesh(input, *cuts, cutMesh);
+    if (!status)
+    {
+      return Status::Failure("ComputePolycube: " + status.Message());
+    }
+    const int copyCount = static_cast<int>(cutMesh.CopiedVertex.size());
+    Points rest(copyCount, 3);
+    Points original(copyCount, 3);
+    for (int v = 0; v < copyCount; ++v)
+    {
+      rest.row(v) = mesh.Rest.row(cutMesh.CopiedVertex[static_cast<size_t>(v)]);
+      original.row(v) = mesh.Original.row(cutMesh.CopiedVertex[static_cast<size_t>(v)]);
+    }
+    mesh.Cells = cutMesh.Cells;
+    mesh.Rest = rest;
+    mesh.Original = original;
+    mesh.OriginalPointId = cutMesh.CopiedVertex;
+    mesh.Identity = cutMesh.CopiedVertex;
+    mesh.Copies = cutMesh.Copies;
+    mesh.Transitions = cuts->Transitions;
+  }
   TetTopology topology;
-  ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+  RefreshTopology(mesh, topology);
   if (topology.NonManifoldFaceCount > 0)
   {
     std::ostringstream message;
@@ -426,7 +594,7 @@ Status ComputePolycube(const TetMesh& input,
     if (!edges.empty())
     {
       SplitEdges(mesh, edges);
-      ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+      RefreshTopology(mesh, topology);
     }
     out.PresplitEdgeCount = static_cast<int>(edges.size());
   }
@@ -434,7 +602,15 @@ Status ComputePolycube(const TetMesh& input,
   // Initial rotation, or the frame-guided start.
   const auto rotationStart = Clock::now();
   const bool frameGuided = !tetFrames.empty();
-  if (frameGuided)
+  if (closedForm)
+  {
+    status = FramePoissonStart(mesh, topology, tetFrames, out);
+    if (!status)
+    {
+      return status;
+    }
+  }
+  else if (frameGuided)
   {
     status = FrameGuidedStart(mesh, topology, tetFrames, params, out);
     if (!status)
@@ -462,7 +638,15 @@ Status ComputePolycube(const TetMesh& input,
   double finalBarrier = params.BarrierWeight;
   {
     PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
-    const VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+    VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+    if (closedForm)
+    {
+      status = CutReduction(mesh, {}, reduction);
+      if (!status)
+      {
+        return Status::Failure("ComputePolycube: " + status.Message());
+      }
+    }
     PolycubeNewtonSolver solver(energy, reduction);
     Eigen::VectorXd x = Flat(mesh.X);
     double weight = params.AlignmentWeight;
@@ -521,13 +705,25 @@ Status ComputePolycube(const TetMesh& input,
 
   // Labels and charts, then the splits that flattening needs.
   const auto labelStart = Clock::now();
-  Triangles adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+  Triangles adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
   std::vector<int> labels = PolycubeFaceLabels(mesh.X, topology.BoundaryFaces);
   PolycubeChartCleanup cleanup;
   cleanup.MinAreaFraction = params.MinChartAreaFraction;
   cleanup.MinFaceCount = params.MinChartFaceCount;
+  if (closedForm)
+  {
+    // A chart may wrap around a handle through a cut (the four sides of a torus's bar): its
+    // boundary loops then have no turn at all and are still flat. The rule would merge them.
+    // (It also catches islands; exempting only the loops that cross a cut is left to do.)
+    cleanup.MinBoundaryTurns = 0;
+  }
   out.RelabelledFaceCount =
     CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
+  if (closedForm)
+  {
+    out.RelabelledFaceCount += MatchLabelsAcrossCuts(
+      FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies), adjacency, mesh.Transitions, labels);
+  }
   // Labels that cannot be flattened (a tongue of one chart squeezed between two sides of
   // another) show up as faces the penalised flattening collapses; they take the neighbouring
   // chart's label and the flattening starts again from the deformed positions.
@@ -585,16 +781,16 @@ Status ComputePolycube(const TetMesh& input,
       const Triangles oldFaces = topology.BoundaryFaces;
       const int oldCount = mesh.VertexCount();
       SplitEdges(mesh, edges);
-      ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+      RefreshTopology(mesh, topology);
       labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
-      adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+      adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
       charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
       out.SplitEdgeCount += static_cast<int>(edges.size());
     }
     {
       // A tet whose four corners are in one chart (all its edges on the boundary, e.g. two
       // boundary faces in one chart across a boundary edge): split at its centroid.
-      adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+      adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
       charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
       const auto vertexCharts =
         VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
@@ -620,7 +816,7 @@ Status ComputePolycube(const TetMesh& input,
         const Triangles oldFaces = topology.BoundaryFaces;
         const int oldCount = mesh.VertexCount();
         SplitTets(mesh, tets);
-        ComputeTetTopology(mesh.VertexCount(), mesh.Cells, topology);
+        RefreshTopology(mesh, topology);
         labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
       }
       out.SplitTetCount = static_cast<int>(tets.size());
@@ -633,7 +829,7 @@ Status ComputePolycube(const TetMesh& input,
         out.Warnings.push_back("a boundary face lost its label in a split");
       }
     }
-    adjacency = ComputeFaceAdjacency(mesh.VertexCount(), topology.BoundaryFaces);
+    adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
     charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
     out.LabelingSeconds = SecondsSince(labelStart);
     if (!ReportProgress(progress, 0.82))
@@ -684,13 +880,15 @@ Status ComputePolycube(const TetMesh& input,
       plane[static_cast<size_t>(c)] =
         planeSum[static_cast<size_t>(root)] / planeWeight[static_cast<size_t>(root)];
     }
-  std::map<int, double> anchors; // coordinate 3v+a -> plane
+    std::map<int, double> anchors; // coordinate 3v+a -> plane
+    std::map<int, int> anchorGroup; // coordinate 3v+a -> its plane's group of charts
     for (int v = 0; v < mesh.VertexCount(); ++v)
     {
       for (int chart : vertexCharts[static_cast<size_t>(v)])
       {
         const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
         anchors[3 * v + axis] = plane[static_cast<size_t>(chart)];
+        anchorGroup[3 * v + axis] = FindRoot(group, chart);
       }
     }
     std::vector<int> anchorIndex;
@@ -737,7 +935,15 @@ Status ComputePolycube(const TetMesh& input,
       energy.SetUnfoldFaces(folded);
       out.InitiallyFoldedFaceCount = unguarded;
       {
-        const VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+        VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
+        if (closedForm)
+        {
+          status = CutReduction(mesh, {}, reduction);
+          if (!status)
+          {
+            return Status::Failure("ComputePolycube: " + status.Message());
+          }
+        }
         PolycubeNewtonSolver solver(energy, reduction);
         double anchorWeight = 1e3 * std::max(1.0, finalBarrier);
         for (int round = 0; round < params.FlattenRounds; ++round, anchorWeight *= 10.0)
@@ -790,6 +996,14 @@ Status ComputePolycube(const TetMesh& input,
           out.CollapseRelabelledFaceCount += collapsed;
           out.RelabelledFaceCount +=
             CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
+          if (closedForm)
+          {
+            out.RelabelledFaceCount += MatchLabelsAcrossCuts(
+              FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies),
+              adjacency,
+              mesh.Transitions,
+              labels);
+          }
           out.FlatteningSeconds += SecondsSince(flattenStart);
           continue; // mesh.X still holds the deformed, unflattened positions
         }
@@ -880,8 +1094,42 @@ Status ComputePolycube(const TetMesh& input,
         // coordinates still held by the penalty.
         energy.SetAnchors(freeIndex, freeTarget);
         energy.SetWeights(weights);
-        const VariableReduction reduction =
-          VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget);
+        VariableReduction reduction;
+        if (closedForm)
+        {
+          // On a cut mesh the planes stay unknowns (each chart's coordinates one variable), so
+          // that the planes of charts linked through the transitions agree exactly.
+          std::map<int, int> groupCoordinate;
+          std::vector<std::array<int, 2>> equalities;
+          for (int i : fixedIndex)
+          {
+            const auto first = groupCoordinate.emplace(anchorGroup[i], i);
+            if (!first.second)
+            {
+              equalities.push_back({ i, first.first->second });
+            }
+          }
+          status = CutReduction(mesh, equalities, reduction);
+          if (!status)
+          {
+            return Status::Failure("ComputePolycube: " + status.Message());
+          }
+          Eigen::VectorXd projected = reduction.Expand(reduction.Restrict(snapped));
+          if (!energy.IsFeasible(projected.data()))
+          {
+            projected = reduction.Expand(reduction.Restrict(x));
+          }
+          if (!energy.IsFeasible(projected.data()))
+          {
+            return Status::Failure("ComputePolycube: the charts of the cut mesh cannot be made "
+                                   "flat with the cut transitions hard without inverting a tet");
+          }
+          snapped = projected;
+        }
+        else
+        {
+          reduction = VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget);
+        }
         PolycubeNewtonSolver solver(energy, reduction);
         NewtonSettings settings;
         settings.LinearSolver = solverType;
@@ -900,8 +1148,46 @@ Status ComputePolycube(const TetMesh& input,
     break;
   }
 
+  // On a cut mesh the planes were unknowns of the last solve: read them back.
+  if (closedForm)
+  {
+    std::vector<double> sum(plane.size(), 0.0);
+    std::vector<int> tally(plane.size(), 0);
+    for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+    {
+      const int chart = charts.FaceChart[static_cast<size_t>(f)];
+      const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
+      for (int c = 0; c < 3; ++c)
+      {
+        sum[static_cast<size_t>(chart)] += mesh.X(topology.BoundaryFaces(f, c), axis);
+        ++tally[static_cast<size_t>(chart)];
+      }
+    }
+    for (size_t c = 0; c < plane.size(); ++c)
+    {
+      plane[c] = tally[c] > 0 ? sum[c] / tally[c] : plane[c];
+    }
+  }
+
   // Results in input units.
   out.Positions = FromUnitDiagonal(frame, mesh.X);
+  // Cut translations from the copies: x_plus = Pi x_minus + t (in input units).
+  out.CutTranslations = Points::Zero(closedForm ? cuts->Count() : 0, 3);
+  {
+    std::vector<int> copiesPerCut(static_cast<size_t>(out.CutTranslations.rows()), 0);
+    for (const CopyRelation& r : mesh.Copies)
+    {
+      const Eigen::Matrix3d pi = mesh.Transitions[static_cast<size_t>(r.Cut)].cast<double>();
+      out.CutTranslations.row(r.Cut) +=
+        out.Positions.row(r.Plus) - (pi * out.Positions.row(r.Minus).transpose()).transpose();
+      ++copiesPerCut[static_cast<size_t>(r.Cut)];
+    }
+    for (Eigen::Index c = 0; c < out.CutTranslations.rows(); ++c)
+    {
+      out.CutTranslations.row(c) /= std::max(1, copiesPerCut[static_cast<size_t>(c)]);
+    }
+  }
+  out.CopyCount = static_cast<int>(mesh.Copies.size());
   out.Cells = mesh.Cells;
   out.OriginalPointId = mesh.OriginalPointId;
   out.OriginalPoints = mesh.Original;
@@ -924,8 +1210,23 @@ Status ComputePolycube(const TetMesh& input,
     out.FaceLabels(topology.BoundaryFaceTet[static_cast<size_t>(f)],
       topology.BoundaryFaceLocal[static_cast<size_t>(f)]) = labels[static_cast<size_t>(f)];
   }
-  out.CornerCount =
-    CountPolycubeCorners(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+  if (closedForm)
+  {
+    // Corners of M: copies are one vertex, and a chart that continues across a cut is one chart.
+    const Triangles glued = IdentityFaces(topology.BoundaryFaces, mesh.Identity);
+    const std::vector<int> linked = ChartsAcrossCuts(
+      FacesAcrossCuts(topology.BoundaryFaces, BoundaryAdjacency(mesh, topology.BoundaryFaces), mesh.Copies),
+      mesh.Transitions,
+      labels,
+      charts.FaceChart,
+      chartCount);
+    out.CornerCount = CountPolycubeCorners(mesh.VertexCount(), glued, linked);
+  }
+  else
+  {
+    out.CornerCount =
+      CountPolycubeCorners(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
+  }
   out.InvertedTetCount = 0;
   out.MinVolumeRatio = std::numeric_limits<double>::infinity();
   for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)

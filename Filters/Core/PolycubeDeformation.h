@@ -13,6 +13,7 @@
 #pragma once
 
 #include "MeshTypes.h"
+#include "PolycubeCutMesh.h"
 #include "Status.h"
 
 #include <Eigen/Core>
@@ -137,6 +138,10 @@ struct PolycubeResult
   Eigen::Matrix3d InitialRotation = Eigen::Matrix3d::Identity();
   /// With frames: sum_t V_t / V ||J_t - R_t||^2 after the frame fit (0 = integrable field).
   double FrameFitResidual = 0.0;
+  /// Closed form: per cut, t_c of x_plus = Pi_c x_minus + t_c (input units; 0 rows without
+  /// cuts), and the number of copy pairs the relations tie.
+  Points CutTranslations;
+  int CopyCount = 0;
   int Rounds = 0;     ///< continuation rounds (0: the input was already a polycube)
   int Iterations = 0; ///< Newton iterations, all phases
   int PresplitEdgeCount = 0;
@@ -162,13 +167,16 @@ struct PolycubeResult
 /// @param tetFrames #T rotations R_t (row a = frame axis a, input coordinates) of a frame field
 ///                  without singularities (FrameFieldResult::Frames), or empty for the Uniform
 ///                  guidance. With frames, the l1 stage starts from the map whose gradient best
-///                  fits them (§4.1, eq. 7) instead of the input rotated. Cuts are not taken
-///                  here: the fit runs on the uncut mesh, which suits genus 0 only (around a
-///                  handle the fit cannot close up without a translation per cut).
+///                  fits them (§4.1, eq. 7) instead of the input rotated.
+/// @param cuts      with frames, the cuts and their transitions (the closed form, §4.1-4.2):
+///                  the mesh is cut open, the copies across each cut are related by
+///                  x_plus = Pi_c x_minus + t_c (t_c unknown) in every solve, and the result is
+///                  the cut mesh with CutTranslations. Null or no cut: the uncut mesh.
 Status ComputePolycube(const TetMesh& input,
   const PolycubeParameters& params,
   PolycubeResult& out,
   const Progress& progress = {},
-  const std::vector<Eigen::Matrix3d>& tetFrames = {});
+  const std::vector<Eigen::Matrix3d>& tetFrames = {},
+  const PolycubeCuts* cuts = nullptr);
 
 } // namespace polycubehex

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <cmath>
 #include <cstddef>
 #include <iostream>
@@ -447,6 +448,144 @@ inline std::vector<std::array<int, 3>> BlockCells(int nx, int ny, int nz)
       for (int k = 0; k < nz; ++k)
         cubes.push_back({ i, j, k });
   return cubes;
+}
+
+// Flips tets of negative volume into VTK's positive order.
+inline void Orient(TetMesh& mesh)
+{
+  for (int t = 0; t < mesh.Cells.rows(); ++t)
+  {
+    if (polycubehex::TetSignedVolume(mesh.Vertices, mesh.Cells, t) < 0.0)
+    {
+      std::swap(mesh.Cells(t, 2), mesh.Cells(t, 3));
+    }
+  }
+}
+
+// A 2D triangulation: points and counter-clockwise triangles.
+struct Planar
+{
+  std::vector<Eigen::Vector2d> Points;
+  std::vector<std::array<int, 3>> Triangles;
+};
+
+// The unit disk in n concentric rings of 6k points.
+inline Planar MakeDisk(int n)
+{
+  Planar disk;
+  disk.Points.push_back(Eigen::Vector2d::Zero());
+  std::vector<std::vector<int>> rings = { { 0 } };
+  for (int k = 1; k <= n; ++k)
+  {
+    std::vector<int> ring;
+    for (int j = 0; j < 6 * k; ++j)
+    {
+      const double a = 2.0 * Pi * j / (6 * k);
+      ring.push_back(static_cast<int>(disk.Points.size()));
+      disk.Points.push_back(Eigen::Vector2d(std::cos(a), std::sin(a)) * k / n);
+    }
+    const std::vector<int>& inner = rings.back();
+    const int m0 = static_cast<int>(inner.size());
+    const int m1 = static_cast<int>(ring.size());
+    int i = 0;
+    int j = 0;
+    while (j < m1 || (m0 > 1 && i < m0))
+    {
+      const double nextInner = m0 > 1 ? (i + 1.0) / m0 : 2.0;
+      const double nextOuter = (j + 1.0) / m1;
+      if (j < m1 && (m0 == 1 || i >= m0 || nextOuter <= nextInner))
+      {
+        disk.Triangles.push_back({ inner[i % m0], ring[j % m1], ring[(j + 1) % m1] });
+        ++j;
+      }
+      else
+      {
+        disk.Triangles.push_back({ inner[i % m0], ring[j % m1], inner[(i + 1) % m0] });
+        ++i;
+      }
+    }
+    rings.push_back(ring);
+  }
+  return disk;
+}
+
+// The square [-1, 1]^2 in n^2 cells, each split into 4 triangles at its centre, so that the
+// triangulation is invariant under quarter turns. `quarter` maps each point to its image.
+inline Planar MakeSquare(int n, std::vector<int>& quarter)
+{
+  Planar square;
+  const int m = n + 1;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      square.Points.push_back(Eigen::Vector2d(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+    {
+      const int centre = static_cast<int>(square.Points.size());
+      square.Points.push_back(
+        Eigen::Vector2d(-1.0 + (2.0 * i + 1.0) / n, -1.0 + (2.0 * j + 1.0) / n));
+      const int c[4] = { i * m + j, (i + 1) * m + j, (i + 1) * m + j + 1, i * m + j + 1 };
+      for (int e = 0; e < 4; ++e)
+      {
+        square.Triangles.push_back({ centre, c[e], c[(e + 1) % 4] });
+      }
+    }
+  quarter.assign(square.Points.size(), -1);
+  for (size_t p = 0; p < square.Points.size(); ++p)
+  {
+    const Eigen::Vector2d image(-square.Points[p](1), square.Points[p](0));
+    for (size_t q = 0; q < square.Points.size(); ++q)
+    {
+      if ((square.Points[q] - image).norm() < 1e-9)
+      {
+        quarter[p] = static_cast<int>(q);
+      }
+    }
+  }
+  return square;
+}
+
+// Sweeps a planar triangulation through `layers` layers of prisms, each split into 3 tets with
+// the diagonal of each side quad from the lower 2D index at the bottom to the higher one at the
+// top (consistent between neighbours). `place(layer, point)` positions the copies; with
+// `periodic` the last layer's top is layer 0 with its points renumbered by `seam`.
+inline TetMesh Sweep(const Planar& planar,
+  int layers,
+  bool periodic,
+  const std::vector<int>& seam,
+  const std::function<Eigen::Vector3d(int, const Eigen::Vector2d&)>& place)
+{
+  const int nv = static_cast<int>(planar.Points.size());
+  const int copies = periodic ? layers : layers + 1;
+  TetMesh mesh;
+  mesh.Vertices.resize(copies * nv, 3);
+  for (int l = 0; l < copies; ++l)
+    for (int v = 0; v < nv; ++v)
+      mesh.Vertices.row(l * nv + v) = place(l, planar.Points[v]).transpose();
+  mesh.Cells.resize(3 * layers * static_cast<int>(planar.Triangles.size()), 4);
+  int t = 0;
+  for (int l = 0; l < layers; ++l)
+  {
+    for (std::array<int, 3> tri : planar.Triangles)
+    {
+      std::sort(tri.begin(), tri.end());
+      auto bottom = [&](int v) { return l * nv + v; };
+      auto top = [&](int v)
+      {
+        if (periodic && l == layers - 1)
+        {
+          return seam.empty() ? v : seam[v];
+        }
+        return (l + 1) * nv + v;
+      };
+      const int a = tri[0], b = tri[1], c = tri[2];
+      mesh.Cells.row(t++) << bottom(a), bottom(b), bottom(c), top(c);
+      mesh.Cells.row(t++) << bottom(a), bottom(b), top(b), top(c);
+      mesh.Cells.row(t++) << bottom(a), top(a), top(b), top(c);
+    }
+  }
+  Orient(mesh);
+  return mesh;
 }
 
 } // namespace polycubehex_test
