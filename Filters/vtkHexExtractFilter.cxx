@@ -114,7 +114,18 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   vtkUnstructuredGrid* hexOutput = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkPolyData* quadOutput = vtkPolyData::GetData(outputVector, 1);
 
-  // 2. Check and convert it.
+  // 2. Check and convert it. A closed-form polycube (cut open, with a translation per cut)
+  // needs the extraction stitched across its cuts, which is not built yet.
+  vtkDataArray* translations =
+    input ? input->GetFieldData()->GetArray(names::CutTranslations) : nullptr;
+  if (translations && translations->GetNumberOfTuples() > 0)
+  {
+    vtkErrorMacro(<< "Cannot extract hexes: the polycube is cut open along "
+                  << translations->GetNumberOfTuples()
+                  << " cut(s) (FrameField guidance on a model with handles), and hex extraction "
+                     "is not yet stitched across cuts. Use Guidance Uniform for this model.");
+    return 0;
+  }
   polycubehex::PolycubeTetMesh mesh;
   std::string why;
   if (!ToPolycubeTetMesh(input, mesh, why))

@@ -22,8 +22,11 @@
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <cmath>
+
 #include <Eigen/Core>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -60,10 +63,14 @@ int vtkPolycubeDeformFilter::FillOutputPortInformation(int port, vtkInformation*
 
 namespace
 {
-/// The input's frames for FrameField guidance, or false with what is missing in `problem`.
-bool ReadFrames(
-  vtkUnstructuredGrid* input, std::vector<Eigen::Matrix3d>& frames, std::string& problem)
+/// The input's frames for FrameField guidance and, when it has cuts, the cuts and their
+/// transitions (the closed form); false with what is missing in `problem`.
+bool ReadFrames(vtkUnstructuredGrid* input,
+  std::vector<Eigen::Matrix3d>& frames,
+  polycubehex::PolycubeCuts& cuts,
+  std::string& problem)
 {
+  cuts = polycubehex::PolycubeCuts();
   frames.clear();
   vtkDataArray* array = input ? input->GetCellData()->GetArray(names::Frame) : nullptr;
   if (!array || array->GetNumberOfComponents() != 9)
@@ -72,16 +79,43 @@ bool ReadFrames(
               "on its input";
     return false;
   }
-  // The frame fit runs on the uncut mesh. Around a handle it cannot close up (the paper
-  // solves for a translation across each cut, which is not built yet), and the fit of a torus
-  // becomes a polycube whose charts fold over each other; so the input must have no cut.
+  // With cuts, the frame fit and the polycube run on the cut mesh, each cut's copies related
+  // by its transition and an unknown translation (eq. 8).
   vtkDataArray* transitions = input->GetFieldData()->GetArray(names::CutTransitions);
   if (transitions && transitions->GetNumberOfTuples() > 0)
   {
-    problem = "an input without handles: this one has " +
-      std::to_string(transitions->GetNumberOfTuples()) +
-      " cut(s), and the closed-form join across cuts (a translation per cut) is not built yet";
-    return false;
+    vtkDataArray* ids = input->GetCellData()->GetArray(names::CutFaces);
+    vtkDataArray* sides = input->GetCellData()->GetArray(names::CutSide);
+    if (transitions->GetNumberOfComponents() != 9 || !ids || !sides ||
+      ids->GetNumberOfComponents() != 4 || sides->GetNumberOfComponents() != 4 ||
+      ids->GetNumberOfTuples() != input->GetNumberOfCells() ||
+      sides->GetNumberOfTuples() != input->GetNumberOfCells())
+    {
+      problem = "the cut cell arrays 'CutFaces' and 'CutSide' (4 components) with the field "
+                "'CutTransitions' (9 components per cut), as vtkHandleCutFilter and "
+                "vtkFrameFieldFilter write them";
+      return false;
+    }
+    const vtkIdType cellCount = input->GetNumberOfCells();
+    cuts.FaceCut.resize(cellCount, 4);
+    cuts.FaceSide.resize(cellCount, 4);
+    for (vtkIdType t = 0; t < cellCount; ++t)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        cuts.FaceCut(t, k) = static_cast<int>(ids->GetComponent(t, k));
+        cuts.FaceSide(t, k) = static_cast<int>(sides->GetComponent(t, k));
+      }
+    }
+    for (vtkIdType c = 0; c < transitions->GetNumberOfTuples(); ++c)
+    {
+      Eigen::Matrix3i pi;
+      for (int a = 0; a < 9; ++a)
+      {
+        pi(a / 3, a % 3) = static_cast<int>(std::lround(transitions->GetComponent(c, a)));
+      }
+      cuts.Transitions.push_back(pi);
+    }
   }
   frames.resize(static_cast<size_t>(array->GetNumberOfTuples()));
   double row[9];
@@ -105,8 +139,9 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
 
   // 2. Check it, and choose the guidance.
   std::vector<Eigen::Matrix3d> frames;
+  polycubehex::PolycubeCuts cuts;
   std::string guidanceProblem;
-  const bool hasFrames = ReadFrames(input, frames, guidanceProblem);
+  const bool hasFrames = ReadFrames(input, frames, cuts, guidanceProblem);
   bool frameGuided = false;
   if (this->Guidance == FRAME_FIELD)
   {
@@ -117,12 +152,13 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     }
     frameGuided = true;
   }
-  // AUTOMATIC runs Uniform until the closed-form join across cuts lands: on the benchmark the
-  // uncut frame fit is not better than Uniform (bunny's is refused by the extraction), so it
-  // is not the default. The Guidance field of the output says which one ran.
+  // AUTOMATIC runs Uniform until the hex extraction is stitched across cuts: the closed-form
+  // polycube of a model with handles cannot be meshed yet. The Guidance field of the output
+  // says which one ran.
   if (!frameGuided)
   {
     frames.clear();
+    cuts = polycubehex::PolycubeCuts();
   }
   polycubehex::TetMesh mesh;
   std::string why;
@@ -151,7 +187,7 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   };
   polycubehex::PolycubeResult result;
   const polycubehex::Status status =
-    polycubehex::ComputePolycube(mesh, params, result, progress, frames);
+    polycubehex::ComputePolycube(mesh, params, result, progress, frames, &cuts);
   if (!status)
   {
     vtkErrorMacro(<< "Polycube deformation failed: " << status.Message());
@@ -227,9 +263,17 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   }
   polycubehex::SetFieldValue<vtkIntArray>(fields, "ChartCount", result.ChartCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
-  vtkNew<vtkDoubleArray> translations; // no cuts in uniform guidance: zero tuples
+  vtkNew<vtkDoubleArray> translations; // t_c of x_plus = Pi_c x_minus + t_c; none when uncut
   translations->SetName(names::CutTranslations);
   translations->SetNumberOfComponents(3);
+  translations->SetNumberOfTuples(result.CutTranslations.rows());
+  for (vtkIdType c = 0; c < result.CutTranslations.rows(); ++c)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      translations->SetComponent(c, a, result.CutTranslations(c, a));
+    }
+  }
   fields->AddArray(translations);
 
   surface->SetPoints(output->GetPoints());

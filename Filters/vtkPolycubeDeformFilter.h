@@ -10,14 +10,15 @@
  * cleaned up, tets that would be forced flat are split, and each chart is flattened exactly
  * onto its plane with every tet kept positive.
  *
- * Guidance: Uniform is the l1-polycube baseline (no frame field, no cuts). FrameField starts
- * the l1 stage from the map whose gradient best fits the input's `Frame` cell array (the output
- * of vtkFrameFieldFilter; the paper's eq. 7, solved with an inversion barrier). It runs on the
- * uncut mesh, so the input must have no cut (genus 0): around a handle the fit cannot close up
- * without the translation per cut of the closed-form join, which is not built yet, and such
- * inputs are refused with an error. Automatic (the default) runs Uniform for now: measured on
- * the shared models, the uncut frame fit is not yet better than Uniform (BENCHMARKS.md); it will
- * switch to FrameField with the closed-form join.
+ * Guidance: Uniform is the l1-polycube baseline (no frame field, no cuts). FrameField is the
+ * paper's closed form: the l1 stage starts from the map whose gradient best fits the input's
+ * `Frame` cell array (vtkFrameFieldFilter's output; eq. 7). When the input has cuts
+ * (`CutFaces`, `CutSide` and the field `CutTransitions`), everything runs on the cut mesh: the
+ * copies across cut c are tied by x_plus = Pi_c x_minus + t_c (eq. 8) with t_c unknown, in the
+ * fit (one linear solve), the l1 stage and the flattening, so that a torus becomes a bar with no
+ * corner. Output port 0 is then the cut mesh (points of cut faces duplicated, one copy per side)
+ * and the field `CutTranslations` holds t_c. Hex extraction is not yet stitched across cuts, so
+ * Automatic (the default) runs Uniform for now.
  *
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
@@ -45,7 +46,8 @@ public:
   };
 
   ///@{
-  /// What guides the polycube. Default AUTOMATIC (Uniform for now). See the class comment.
+  /// What guides the polycube. Default AUTOMATIC (Uniform until the hex extraction is stitched
+  /// across cuts). See the class comment.
   vtkSetClampMacro(Guidance, int, AUTOMATIC, UNIFORM);
   vtkGetMacro(Guidance, int);
   ///@}

@@ -898,6 +898,33 @@ Status ComputePolycube(const TetMesh& input,
       anchorIndex.push_back(entry.first);
       anchorTarget.push_back(entry.second);
     }
+    if (closedForm)
+    {
+      // Plane means of charts on the two sides of a cut need not agree with the cut's
+      // transition; the targets are instead the nearest shape (least squares) with every chart
+      // flat and every copy relation exact, so that the penalty can reach them.
+      std::map<int, int> groupCoordinate;
+      std::vector<std::array<int, 2>> equalities;
+      for (int i : anchorIndex)
+      {
+        const auto first = groupCoordinate.emplace(anchorGroup[i], i);
+        if (!first.second)
+        {
+          equalities.push_back({ i, first.first->second });
+        }
+      }
+      VariableReduction flat;
+      status = CutReduction(mesh, equalities, flat);
+      if (!status)
+      {
+        return Status::Failure("ComputePolycube: " + status.Message());
+      }
+      const Eigen::VectorXd nearest = flat.Expand(flat.Restrict(Flat(mesh.X)));
+      for (size_t i = 0; i < anchorIndex.size(); ++i)
+      {
+        anchorTarget[i] = nearest(anchorIndex[i]);
+      }
+    }
 
     // Flattening: pull the chart coordinates onto their planes with a growing penalty (the line
     // search keeps every tet positive), then make them exact and relax the rest by ARAP.
@@ -1098,32 +1125,118 @@ Status ComputePolycube(const TetMesh& input,
         if (closedForm)
         {
           // On a cut mesh the planes stay unknowns (each chart's coordinates one variable), so
-          // that the planes of charts linked through the transitions agree exactly.
-          std::map<int, int> groupCoordinate;
-          std::vector<std::array<int, 2>> equalities;
-          for (int i : fixedIndex)
+          // that the planes of charts linked through the transitions agree exactly. The start
+          // is the penalised shape (it satisfies the transitions) projected onto the planes;
+          // vertices of tets that projection inverts are released, as above.
+          std::vector<bool> loose(anchorIndex.size(), false);
+          for (size_t i = 0; i < anchorIndex.size(); ++i)
           {
-            const auto first = groupCoordinate.emplace(anchorGroup[i], i);
-            if (!first.second)
+            loose[i] = released[i];
+          }
+          Eigen::VectorXd projected = x;
+          bool feasible = false;
+          for (int attempt = 0; attempt < 50 && !feasible; ++attempt)
+          {
+            std::map<int, int> groupCoordinate;
+            std::vector<std::array<int, 2>> equalities;
+            for (size_t i = 0; i < anchorIndex.size(); ++i)
             {
-              equalities.push_back({ i, first.first->second });
+              if (loose[i])
+              {
+                continue;
+              }
+              const auto first = groupCoordinate.emplace(anchorGroup[anchorIndex[i]], anchorIndex[i]);
+              if (!first.second)
+              {
+                equalities.push_back({ anchorIndex[i], first.first->second });
+              }
+            }
+            status = CutReduction(mesh, equalities, reduction);
+            if (!status)
+            {
+              return Status::Failure("ComputePolycube: " + status.Message());
+            }
+            projected = reduction.Expand(reduction.Restrict(x));
+            feasible = energy.IsFeasible(projected.data());
+            if (feasible)
+            {
+              break;
+            }
+            // Release the vertices of inverted tets and folded faces, and their neighbours (the
+            // projection spreads a conflict over a few tets, so one ring at a time is slow).
+            const Points current = Unflat(projected);
+            std::vector<char> bad(static_cast<size_t>(mesh.VertexCount()), 0);
+            for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+            {
+              if (!(TetSignedVolume(current, mesh.Cells, static_cast<int>(t)) > 0.0))
+              {
+                for (int k = 0; k < 4; ++k)
+                {
+                  bad[static_cast<size_t>(mesh.Cells(t, k))] = 1;
+                }
+              }
+            }
+            for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
+            {
+              if (guarded[static_cast<size_t>(f)] >= 0 &&
+                !(energy.FaceOrientation(projected.data(), static_cast<int>(f)) > 0.0))
+              {
+                for (int k = 0; k < 3; ++k)
+                {
+                  bad[static_cast<size_t>(topology.BoundaryFaces(f, k))] = 1;
+                }
+              }
+            }
+            std::vector<char> ring = bad;
+            for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
+            {
+              const bool touches = bad[static_cast<size_t>(mesh.Cells(t, 0))] ||
+                bad[static_cast<size_t>(mesh.Cells(t, 1))] ||
+                bad[static_cast<size_t>(mesh.Cells(t, 2))] || bad[static_cast<size_t>(mesh.Cells(t, 3))];
+              for (int k = 0; k < 4 && touches; ++k)
+              {
+                ring[static_cast<size_t>(mesh.Cells(t, k))] = 1;
+              }
+            }
+            for (int v = 0; v < mesh.VertexCount(); ++v)
+            {
+              for (int i : ring[static_cast<size_t>(v)] ? vertexAnchors[static_cast<size_t>(v)] : std::vector<int>())
+              {
+                loose[static_cast<size_t>(i)] = true;
+              }
             }
           }
-          status = CutReduction(mesh, equalities, reduction);
-          if (!status)
+          if (!feasible)
           {
-            return Status::Failure("ComputePolycube: " + status.Message());
+            // Keep the penalised shape (every tet positive, the transitions exact), with its
+            // charts flat only to the penalty's tolerance, and say so.
+            projected = x;
+            std::fill(loose.begin(), loose.end(), true);
+            reduction = VariableReduction();
+            status = CutReduction(mesh, {}, reduction);
+            if (!status)
+            {
+              return Status::Failure("ComputePolycube: " + status.Message());
+            }
+            out.Warnings.push_back("the charts of the cut mesh could not all be made exactly flat "
+                                   "with the cut transitions hard: they stay within the "
+                                   "flattening penalty's tolerance of their planes");
           }
-          Eigen::VectorXd projected = reduction.Expand(reduction.Restrict(snapped));
-          if (!energy.IsFeasible(projected.data()))
+          std::vector<int> looseIndex;
+          std::vector<double> looseTarget;
+          std::vector<bool> looseVertex(static_cast<size_t>(mesh.VertexCount()), false);
+          for (size_t i = 0; i < anchorIndex.size(); ++i)
           {
-            projected = reduction.Expand(reduction.Restrict(x));
+            if (loose[i])
+            {
+              looseIndex.push_back(anchorIndex[i]);
+              looseTarget.push_back(anchorTarget[i]);
+              looseVertex[static_cast<size_t>(anchorIndex[i] / 3)] = true;
+            }
           }
-          if (!energy.IsFeasible(projected.data()))
-          {
-            return Status::Failure("ComputePolycube: the charts of the cut mesh cannot be made "
-                                   "flat with the cut transitions hard without inverting a tet");
-          }
+          energy.SetAnchors(looseIndex, looseTarget);
+          out.UnflattenedVertexCount =
+            static_cast<int>(std::count(looseVertex.begin(), looseVertex.end(), true));
           snapped = projected;
         }
         else
