@@ -1135,7 +1135,7 @@ Status ComputePolycube(const TetMesh& input,
           }
           Eigen::VectorXd projected = x;
           bool feasible = false;
-          for (int attempt = 0; attempt < 50 && !feasible; ++attempt)
+          for (int attempt = 0; attempt < 10 && !feasible; ++attempt)
           {
             std::map<int, int> groupCoordinate;
             std::vector<std::array<int, 2>> equalities;
