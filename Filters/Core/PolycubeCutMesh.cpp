@@ -323,15 +323,22 @@ std::vector<std::array<int, 3>> FacesAcrossCuts(const Triangles& faces,
 }
 
 int MatchLabelsAcrossCuts(const std::vector<std::array<int, 3>>& across,
+  const Points& x,
+  const Triangles& faces,
   const Triangles& adjacency,
   const std::vector<Eigen::Matrix3i>& transitions,
   std::vector<int>& labels)
 {
-  // Which side gives way: the face whose new label more of its other neighbours carry, so
-  // that the change does not leave a one-face tooth behind.
-  auto support = [&](int face, int label, int other)
+  // Which side gives way: first the face whose normal still points along its new label (no
+  // face folds over), then the one whose other neighbours already carry the new label (no
+  // one-face tooth is left behind).
+  auto score = [&](int face, int label, int other)
   {
-    int count = 0;
+    const Eigen::Vector3d p0 = x.row(faces(face, 0)).transpose();
+    const Eigen::Vector3d normal = (x.row(faces(face, 1)).transpose() - p0)
+                                     .cross(x.row(faces(face, 2)).transpose() - p0);
+    const double along = (label % 2 == 0 ? 1.0 : -1.0) * normal(label / 2);
+    int count = along > 0.0 ? 10 : 0;
     for (int e = 0; e < 3; ++e)
     {
       const int n = adjacency(face, e);
@@ -351,7 +358,7 @@ int MatchLabelsAcrossCuts(const std::vector<std::array<int, 3>>& across,
       continue;
     }
     const int minusLabel = TransformLabel(pi.transpose(), labels[static_cast<size_t>(plus)]);
-    if (support(plus, plusLabel, minus) >= support(minus, minusLabel, plus))
+    if (score(plus, plusLabel, minus) >= score(minus, minusLabel, plus))
     {
       labels[static_cast<size_t>(plus)] = plusLabel;
     }

@@ -87,11 +87,13 @@ std::vector<std::array<int, 3>> FacesAcrossCuts(const Triangles& faces,
   const std::vector<CopyRelation>& copies);
 
 /// Makes the labels agree across every cut's loop: of two neighbours across it whose labels are
-/// not related by Pi_c, one takes the other's label transformed (the one whose other neighbours
-/// already carry it). Chart boundaries then cross the loop at copies of
+/// not related by Pi_c, one takes the other's label transformed: preferably one whose normal
+/// (in positions `x`) points along the new label, then one whose other neighbours carry it. Chart boundaries then cross the loop at copies of
 /// one vertex, which the transitions need (otherwise a vertex inside a chart on one side is
 /// held on a chart edge by its copy, and the faces between collapse). Returns the changes.
 int MatchLabelsAcrossCuts(const std::vector<std::array<int, 3>>& across,
+  const Points& x,
+  const Triangles& faces,
   const Triangles& adjacency,
   const std::vector<Eigen::Matrix3i>& transitions,
   std::vector<int>& labels);

@@ -722,7 +722,12 @@ Status ComputePolycube(const TetMesh& input,
   if (closedForm)
   {
     out.RelabelledFaceCount += MatchLabelsAcrossCuts(
-      FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies), adjacency, mesh.Transitions, labels);
+      FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies),
+      mesh.X,
+      topology.BoundaryFaces,
+      adjacency,
+      mesh.Transitions,
+      labels);
   }
   // Labels that cannot be flattened (a tongue of one chart squeezed between two sides of
   // another) show up as faces the penalised flattening collapses; they take the neighbouring
@@ -1027,6 +1032,8 @@ Status ComputePolycube(const TetMesh& input,
           {
             out.RelabelledFaceCount += MatchLabelsAcrossCuts(
               FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies),
+              mesh.X,
+              topology.BoundaryFaces,
               adjacency,
               mesh.Transitions,
               labels);
