@@ -457,6 +457,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   result.SmoothingSeconds = Seconds(start);
 
   // 6. Measures and output in the input's units.
+  start = std::chrono::steady_clock::now();
   result.ScaledJacobian = ComputeHexScaledJacobians(mesh);
   result.HexCount = static_cast<int>(mesh.Cells.rows());
   result.ScaledJacobianMin = result.ScaledJacobian.minCoeff();
@@ -486,6 +487,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       result.BoundaryQuadLabels[q] = charts.ChartLabel[common[0]];
     }
   }
+  result.MeasuresSeconds = Seconds(start);
   mesh.Vertices = (mesh.Vertices * diagonal).rowwise() + centre;
   result.Mesh = std::move(mesh);
   ReportProgress(progress, 1.0);

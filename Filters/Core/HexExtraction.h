@@ -104,6 +104,7 @@ struct HexExtractionResult
   double ExtractionSeconds = 0.0;
   double PaddingSeconds = 0.0;
   double SmoothingSeconds = 0.0;
+  double MeasuresSeconds = 0.0; ///< quality, validity and boundary quads of the result
 };
 
 /// Extracts an all-hex mesh from a polycube-deformed tet mesh.
