@@ -265,6 +265,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     {
       break;
     }
+    if (status && rounded.UnflattenableCharts)
+    {
+      break; // the charts cannot be flat at any scale
+    }
     if (bestEffort && Seconds(start) > 2.0 * rounding.TimeBudgetSeconds)
     {
       break; // other scales rarely do better than a best effort; do not spend minutes on them
