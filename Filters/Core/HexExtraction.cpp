@@ -265,6 +265,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     {
       break;
     }
+    if (status && rounded.UnflattenableCharts)
+    {
+      break; // the charts cannot be flat at any scale
+    }
     if (bestEffort && Seconds(start) > 2.0 * rounding.TimeBudgetSeconds)
     {
       break; // other scales rarely do better than a best effort; do not spend minutes on them
@@ -457,6 +461,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   result.SmoothingSeconds = Seconds(start);
 
   // 6. Measures and output in the input's units.
+  start = std::chrono::steady_clock::now();
   result.ScaledJacobian = ComputeHexScaledJacobians(mesh);
   result.HexCount = static_cast<int>(mesh.Cells.rows());
   result.ScaledJacobianMin = result.ScaledJacobian.minCoeff();
@@ -486,6 +491,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       result.BoundaryQuadLabels[q] = charts.ChartLabel[common[0]];
     }
   }
+  result.MeasuresSeconds = Seconds(start);
   mesh.Vertices = (mesh.Vertices * diagonal).rowwise() + centre;
   result.Mesh = std::move(mesh);
   ReportProgress(progress, 1.0);

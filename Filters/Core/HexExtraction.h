@@ -59,7 +59,9 @@ struct HexExtractionParameters
   /// Scales tried when rounding fails, 1 to 7 (default 5): the target scale, then +-1 %, +-2 %
   /// (+-3 % for 6 and 7), so that the hex count stays within 10 % of the target. Where the
   /// planes fall between integers decides whether greedy rounding can keep every tet positive
-  /// (1 % of a 30-unit model moves a plane by 0.3).
+  /// (1 % of a 30-unit model moves a plane by 0.3). A best effort because the polycube's
+  /// charts cannot all be flat (IntegerRoundingResult::UnflattenableCharts) ends the attempts:
+  /// that does not depend on the scale.
   int RoundingAttempts = 5;
 };
 
@@ -104,6 +106,7 @@ struct HexExtractionResult
   double ExtractionSeconds = 0.0;
   double PaddingSeconds = 0.0;
   double SmoothingSeconds = 0.0;
+  double MeasuresSeconds = 0.0; ///< quality, validity and boundary quads of the result
 };
 
 /// Extracts an all-hex mesh from a polycube-deformed tet mesh.

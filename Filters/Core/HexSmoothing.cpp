@@ -404,12 +404,16 @@ Status smoothHexMesh(HexMesh& mesh,
     double Min;
     double Mean;
   };
+  // The last evaluation's values per hex, so that an accepted move need not recompute them.
+  std::vector<double> evaluated;
   auto evaluate = [&](int v)
   {
     Local local{ std::numeric_limits<double>::max(), 0.0 };
+    evaluated.clear();
     for (int h : hexesOf[v])
     {
       const double q = HexScaledJacobian(mesh, h);
+      evaluated.push_back(q);
       local.Min = std::min(local.Min, q);
       local.Mean += q / static_cast<double>(hexesOf[v].size());
     }
@@ -424,6 +428,17 @@ Status smoothHexMesh(HexMesh& mesh,
   { return a.Mean > b.Mean + 1e-9 && a.Min >= std::min(b.Min, floor); };
   auto better = [](const Local& a, const Local& b)
   { return a.Min > b.Min + 1e-9 || (a.Min >= b.Min && a.Mean > b.Mean + 1e-9); };
+  // The same from `quality`, which always holds the current value of every hex.
+  auto cached = [&](int v)
+  {
+    Local local{ std::numeric_limits<double>::max(), 0.0 };
+    for (int h : hexesOf[v])
+    {
+      local.Min = std::min(local.Min, quality[h]);
+      local.Mean += quality[h] / static_cast<double>(hexesOf[v].size());
+    }
+    return local;
+  };
   // Moves a vertex to `candidate` (projected for boundary vertices) if `accept` approves.
   auto tryMove = [&](int v, Eigen::Vector3d candidate, Local& current, auto&& accept)
   {
@@ -437,9 +452,9 @@ Status smoothHexMesh(HexMesh& mesh,
     if (accept(moved, current))
     {
       current = moved;
-      for (int h : hexesOf[v])
+      for (size_t i = 0; i < hexesOf[v].size(); ++i)
       {
-        quality[h] = HexScaledJacobian(mesh, h);
+        quality[hexesOf[v][i]] = evaluated[i];
       }
       return true;
     }
@@ -447,6 +462,8 @@ Status smoothHexMesh(HexMesh& mesh,
     return false;
   };
 
+  std::vector<Eigen::Vector3d> along; // feature neighbours, for the curve's tangent
+  std::vector<Eigen::Vector3d> directions;
   for (int sweep = 0; sweep < params.Iterations; ++sweep)
   {
     if (!ReportProgress(progress, static_cast<double>(sweep) / params.Iterations))
@@ -462,7 +479,7 @@ Status smoothHexMesh(HexMesh& mesh,
       const std::vector<int>& around =
         kinds[v] == Kind::Interior ? neighbours[v] : surfaceNeighbours[v];
       Eigen::Vector3d target = Eigen::Vector3d::Zero();
-      std::vector<Eigen::Vector3d> along; // feature neighbours, for the curve's tangent
+      along.clear();
       int count = 0;
       double edgeLength = 0.0;
       for (int w : around)
@@ -485,7 +502,7 @@ Status smoothHexMesh(HexMesh& mesh,
       target /= count;
       edgeLength /= static_cast<double>(around.size());
       const Eigen::Vector3d old = mesh.Vertices.row(v).transpose();
-      Local current = evaluate(v);
+      Local current = cached(v);
 
       // 1. Laplacian: towards the mean of the neighbours, full step, then half, then a quarter.
       for (double step : { 1.0, 0.5, 0.25 })
@@ -502,7 +519,7 @@ Status smoothHexMesh(HexMesh& mesh,
       {
         continue;
       }
-      std::vector<Eigen::Vector3d> directions;
+      directions.clear();
       if (kinds[v] == Kind::Interior)
       {
         directions = {

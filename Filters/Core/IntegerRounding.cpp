@@ -49,6 +49,47 @@ double SignedVolume(const Points& x, const Tets& cells, int t)
   return (b - a).dot((c - a).cross(d - a)) / 6.0;
 }
 
+/// Whether every tet stays positive when each plane's coordinates are set to their mean: the
+/// relaxation's shared-plane start (PolycubePlaneRelaxation.cpp). Invariant under scaling.
+bool ChartsCanBeFlat(const Points& reference, const Tets& cells, const ChartPlanes& charts)
+{
+  const int planeCount = static_cast<int>(charts.PlaneAxis.size());
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(planeCount);
+  Eigen::VectorXd count = Eigen::VectorXd::Zero(planeCount);
+  for (int v = 0; v < reference.rows(); ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const int p = charts.VertexPlane(v, a);
+      if (p >= 0)
+      {
+        sum[p] += reference(v, a);
+        count[p] += 1.0;
+      }
+    }
+  }
+  Points flat = reference;
+  for (int v = 0; v < reference.rows(); ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const int p = charts.VertexPlane(v, a);
+      if (p >= 0)
+      {
+        flat(v, a) = sum[p] / count[p];
+      }
+    }
+  }
+  for (int t = 0; t < cells.rows(); ++t)
+  {
+    if (!(SignedVolume(flat, cells, t) > 0.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// Face adjacency through sorted vertex triples; counts faces used by more than two tets.
 int ComputeNeighbors(const Tets& cells, Tets& neighbors)
 {
@@ -1326,7 +1367,11 @@ Status roundPolycubePlanes(const Points& rest,
   const auto budget = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
     std::chrono::duration<double>(std::max(0.0, params.TimeBudgetSeconds)));
   const auto deadline = started + budget;
-  if (!finish(planes) && std::chrono::steady_clock::now() < started + budget / 2)
+  const bool fastFailed = !finish(planes);
+  result.UnflattenableCharts = fastFailed && params.AcceptInvertedTets &&
+    !params.FallbacksWhenUnflattenable && !ChartsCanBeFlat(reference, cells, charts);
+  if (fastFailed && !result.UnflattenableCharts &&
+    std::chrono::steady_clock::now() < started + budget / 2)
   {
     // The same integers, reached by moving the planes under a barrier (every tet stays
     // positive) instead of the linear re-solve.
@@ -1349,7 +1394,12 @@ Status roundPolycubePlanes(const Points& rest,
   const Eigen::VectorXd fastPlanes = planes;
   const Points fastPositions = result.Positions;
   const double fastRatio = result.MinVolumeRatio;
-  if (!result.Relaxed && !(result.MinVolumeRatio >= params.MinimumVolumeRatio))
+  if (result.UnflattenableCharts)
+  {
+    result.BestEffort = true;
+    result.BestEffortReason = "the polycube's charts cannot all be flat without inverting a tet";
+  }
+  else if (!result.Relaxed && !(result.MinVolumeRatio >= params.MinimumVolumeRatio))
   {
     // Careful path: each candidate must keep the re-solved polycube positive.
     result.CarefulPath = true;

@@ -21,7 +21,10 @@
 // unit apart (an active set in the continuous re-solve, longest paths for the integer choice).
 // The linear re-solve does not keep every sliver of a real polycube positive, so the result is
 // untangled (a local pattern search, then a penalised L-BFGS over all free coordinates) and
-// checked; a volume check per candidate is the fallback.
+// checked; a volume check per candidate is the fallback. When the reference's charts cannot all
+// be flat without inverting a tet (the deformation left vertices off their planes), no fallback
+// rescued the rounding on the models tried (rockerarm, kitten: 0 of 7 scales), so the first
+// rounding comes back as a best effort at once.
 #pragma once
 
 #include "MeshTypes.h"
@@ -164,6 +167,10 @@ struct IntegerRoundingParameters
   /// deformation could not realise (a chart squeezed between planes it got too close) leave a
   /// few such tets; a mesh with a few bad hexes and a warning serves better than none.
   bool AcceptInvertedTets = true;
+  /// Try the slow fallbacks even when the reference's charts cannot all be flat without
+  /// inverting a tet (default off: then the first rounding comes back as a best effort at once,
+  /// see IntegerRoundingResult::UnflattenableCharts).
+  bool FallbacksWhenUnflattenable = false;
   /// Wall seconds the slow fallbacks may take after the first rounding failed (default 10): the
   /// barrier relaxation starts only within the first half, and the careful path stops at the end
   /// (then AcceptInvertedTets decides). Both rarely rescue a polycube whose labels the
@@ -191,6 +198,12 @@ struct IntegerRoundingResult
   /// True when AcceptInvertedTets returned the first rounding with tets below the minimum.
   bool BestEffort = false;
   std::string BestEffortReason;
+  /// True when the reference's charts cannot all be flat (each plane at the mean of its
+  /// coordinates) without inverting a tet: the deformation left vertices off their planes. The
+  /// slow fallbacks were skipped (they rescued no such polycube we tried and took 85-95 % of
+  /// the hex stage), and the property does not depend on the scale, so other scales are not
+  /// tried either.
+  bool UnflattenableCharts = false;
   int InvertedTetCount = 0; ///< non-positive tets in Positions (0 unless BestEffort)
 };
 
