@@ -253,12 +253,22 @@ Triangles BoundaryAdjacency(const WorkMesh& mesh, const Triangles& faces)
     : ComputeFaceAdjacency(mesh.VertexCount(), IdentityFaces(faces, mesh.Identity));
 }
 
+/// The charts whose faces share one plane: on a cut mesh, a chart of M that runs across a cut
+/// is one piece on each side, and the pieces' planes differ by the cut's translation (a chart
+/// around a handle may climb by t_c along its normal), so charts are taken on M_c itself.
+PolycubeCharts PlaneCharts(const WorkMesh& mesh, const Triangles& faces, const std::vector<int>& labels)
+{
+  return ComputePolycubeCharts(
+    mesh.X, faces, ComputeFaceAdjacency(mesh.VertexCount(), faces), labels);
+}
+
 /// The variables of a cut mesh: copies related by their cut's transition with unknown
 /// translations (eq. 8), and the coordinates of `equalities` made equal (chart planes).
 Status CutReduction(const WorkMesh& mesh,
   const std::vector<std::array<int, 2>>& equalities,
   VariableReduction& reduction,
-  CoordinateRelations* relationsOut = nullptr)
+  CoordinateRelations* relationsOut = nullptr,
+  const Eigen::VectorXd* fixedTranslations = nullptr)
 {
   const int cutCount = static_cast<int>(mesh.Transitions.size());
   std::vector<int> extraAxis(static_cast<size_t>(3 * cutCount));
@@ -271,6 +281,14 @@ Status CutReduction(const WorkMesh& mesh,
   for (const auto& pair : equalities)
   {
     relations.Relate(pair[0], pair[1], 1.0);
+  }
+  if (fixedTranslations != nullptr)
+  {
+    // t_k = value, written as the loop x_0 = x_0 + t_k - value.
+    for (int k = 0; k < 3 * cutCount; ++k)
+    {
+      relations.Relate(0, 0, 1.0, { { k, 1.0 } }, -(*fixedTranslations)(k));
+    }
   }
   const Status status = relations.Build(reduction);
   if (status && relationsOut != nullptr)
@@ -738,7 +756,7 @@ Status ComputePolycube(const TetMesh& input,
   const int labelAttempts = 1 + std::max(0, params.CollapseRelabelAttempts);
   for (int labelAttempt = 0; labelAttempt < labelAttempts; ++labelAttempt)
   {
-    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+    charts = PlaneCharts(mesh, topology.BoundaryFaces, labels);
     for (int pass = 0; pass < 4; ++pass)
     {
       // An interior edge with both ends in one chart would lie in the chart's plane; a boundary
@@ -789,14 +807,14 @@ Status ComputePolycube(const TetMesh& input,
       RefreshTopology(mesh, topology);
       labels = TransferFaceValues(oldFaces, labels, oldCount, topology.BoundaryFaces, mesh);
       adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
-      charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+      charts = PlaneCharts(mesh, topology.BoundaryFaces, labels);
       out.SplitEdgeCount += static_cast<int>(edges.size());
     }
     {
       // A tet whose four corners are in one chart (all its edges on the boundary, e.g. two
       // boundary faces in one chart across a boundary edge): split at its centroid.
       adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
-      charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+      charts = PlaneCharts(mesh, topology.BoundaryFaces, labels);
       const auto vertexCharts =
         VertexCharts(mesh.VertexCount(), topology.BoundaryFaces, charts.FaceChart);
       std::vector<int> tets;
@@ -835,7 +853,7 @@ Status ComputePolycube(const TetMesh& input,
       }
     }
     adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
-    charts = ComputePolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, labels);
+    charts = PlaneCharts(mesh, topology.BoundaryFaces, labels);
     out.LabelingSeconds = SecondsSince(labelStart);
     if (!ReportProgress(progress, 0.82))
     {
@@ -1140,6 +1158,19 @@ Status ComputePolycube(const TetMesh& input,
           {
             loose[i] = released[i];
           }
+          // The translations stay as the penalised shape has them: moving them would move every
+          // copy on the plus side of a cut, and thin tets there would invert.
+          Eigen::VectorXd translations;
+          {
+            VariableReduction copiesOnly;
+            CoordinateRelations relations(0, 0, {});
+            status = CutReduction(mesh, {}, copiesOnly, &relations);
+            if (!status)
+            {
+              return Status::Failure("ComputePolycube: " + status.Message());
+            }
+            translations = relations.Extras(copiesOnly.Restrict(x));
+          }
           Eigen::VectorXd projected = x;
           bool feasible = false;
           for (int attempt = 0; attempt < 10 && !feasible; ++attempt)
@@ -1158,7 +1189,7 @@ Status ComputePolycube(const TetMesh& input,
                 equalities.push_back({ anchorIndex[i], first.first->second });
               }
             }
-            status = CutReduction(mesh, equalities, reduction);
+            status = CutReduction(mesh, equalities, reduction, nullptr, &translations);
             if (!status)
             {
               return Status::Failure("ComputePolycube: " + status.Message());
@@ -1205,9 +1236,22 @@ Status ComputePolycube(const TetMesh& input,
                 ring[static_cast<size_t>(mesh.Cells(t, k))] = 1;
               }
             }
+            // Copies move together (the transitions are hard): release every copy of a point.
+            std::vector<char> releasedPoint(static_cast<size_t>(mesh.VertexCount()), 0);
             for (int v = 0; v < mesh.VertexCount(); ++v)
             {
-              for (int i : ring[static_cast<size_t>(v)] ? vertexAnchors[static_cast<size_t>(v)] : std::vector<int>())
+              if (ring[static_cast<size_t>(v)])
+              {
+                releasedPoint[static_cast<size_t>(mesh.Identity[static_cast<size_t>(v)])] = 1;
+              }
+            }
+            for (int v = 0; v < mesh.VertexCount(); ++v)
+            {
+              if (!releasedPoint[static_cast<size_t>(mesh.Identity[static_cast<size_t>(v)])])
+              {
+                continue;
+              }
+              for (int i : vertexAnchors[static_cast<size_t>(v)])
               {
                 loose[static_cast<size_t>(i)] = true;
               }
