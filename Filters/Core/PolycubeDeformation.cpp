@@ -1189,10 +1189,16 @@ Status ComputePolycube(const TetMesh& input,
                 equalities.push_back({ anchorIndex[i], first.first->second });
               }
             }
+            // Charts linked through several cuts can tie the translations among themselves;
+            // then they cannot also stay as they are, and are left free.
             status = CutReduction(mesh, equalities, reduction, nullptr, &translations);
             if (!status)
             {
-              return Status::Failure("ComputePolycube: " + status.Message());
+              status = CutReduction(mesh, equalities, reduction);
+            }
+            if (!status)
+            {
+              break; // contradictory planes: keep the penalised shape below
             }
             projected = reduction.Expand(reduction.Restrict(x));
             feasible = energy.IsFeasible(projected.data());
