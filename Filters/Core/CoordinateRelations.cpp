@@ -117,20 +117,6 @@ bool CoordinateRelations::Relate(int i,
   Affine offset;
   offset.Add(rest, si);
   const double composed = si * sign * sj;
-  auto fixRoot = [this](int root, const Affine& value)
-  {
-    if (this->RootFixed[static_cast<size_t>(root)])
-    {
-      Affine equation = this->RootValue[static_cast<size_t>(root)];
-      equation.Add(value, -1.0);
-      this->ExtraEquations.push_back(equation);
-    }
-    else
-    {
-      this->RootFixed[static_cast<size_t>(root)] = true;
-      this->RootValue[static_cast<size_t>(root)] = value;
-    }
-  };
   if (ri != rj)
   {
     Node& node = this->Nodes[static_cast<size_t>(ri)];
@@ -145,7 +131,7 @@ bool CoordinateRelations::Relate(int i,
       Affine scaled;
       scaled.Add(value, composed);
       this->RootFixed[static_cast<size_t>(ri)] = false;
-      fixRoot(rj, scaled);
+      this->FixRoot(rj, scaled);
     }
     return true;
   }
@@ -158,7 +144,7 @@ bool CoordinateRelations::Relate(int i,
   {
     Affine half; // x_r = -x_r + offset: x_r = offset / 2
     half.Add(offset, 0.5);
-    fixRoot(ri, half);
+    this->FixRoot(ri, half);
   }
   return true;
 }
@@ -181,18 +167,23 @@ bool CoordinateRelations::Fix(int i, double value)
   }
   Affine scaled;
   scaled.Add(target, i == root ? 1.0 : node.Sign);
+  this->FixRoot(root, scaled);
+  return true;
+}
+
+void CoordinateRelations::FixRoot(int root, const Affine& value)
+{
   if (this->RootFixed[static_cast<size_t>(root)])
   {
     Affine equation = this->RootValue[static_cast<size_t>(root)];
-    equation.Add(scaled, -1.0);
-    this->ExtraEquations.push_back(equation);
+    equation.Add(value, -1.0);
+    this->ExtraEquations.push_back(equation); // two values for one class: an equation on t
   }
   else
   {
     this->RootFixed[static_cast<size_t>(root)] = true;
-    this->RootValue[static_cast<size_t>(root)] = scaled;
+    this->RootValue[static_cast<size_t>(root)] = value;
   }
-  return true;
 }
 
 Status CoordinateRelations::Build(VariableReduction& reduction)

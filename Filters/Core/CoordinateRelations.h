@@ -74,6 +74,7 @@ private:
   };
 
   int Find(int i); ///< compresses paths, composing signs and offsets
+  void FixRoot(int root, const Affine& value); ///< x_root = value (an equation if already fixed)
 
   int CoordinateCount = 0;
   int ExtraCount = 0;

@@ -735,18 +735,22 @@ Status ComputePolycube(const TetMesh& input,
     // (It also catches islands; exempting only the loops that cross a cut is left to do.)
     cleanup.MinBoundaryTurns = 0;
   }
-  out.RelabelledFaceCount =
-    CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
-  if (closedForm)
+  // Clean-up, and on a cut mesh labels that agree across the cuts; returns the changes.
+  auto cleanUpLabels = [&]()
   {
-    out.RelabelledFaceCount += MatchLabelsAcrossCuts(
-      FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies),
-      mesh.X,
-      topology.BoundaryFaces,
-      adjacency,
-      mesh.Transitions,
-      labels);
-  }
+    int changed = CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
+    if (closedForm)
+    {
+      changed += MatchLabelsAcrossCuts(FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies),
+        mesh.X,
+        topology.BoundaryFaces,
+        adjacency,
+        mesh.Transitions,
+        labels);
+    }
+    return changed;
+  };
+  out.RelabelledFaceCount = cleanUpLabels();
   // Labels that cannot be flattened (a tongue of one chart squeezed between two sides of
   // another) show up as faces the penalised flattening collapses; they take the neighbouring
   // chart's label and the flattening starts again from the deformed positions.
@@ -1044,18 +1048,7 @@ Status ComputePolycube(const TetMesh& input,
         if (collapsed > 0)
         {
           out.CollapseRelabelledFaceCount += collapsed;
-          out.RelabelledFaceCount +=
-            CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
-          if (closedForm)
-          {
-            out.RelabelledFaceCount += MatchLabelsAcrossCuts(
-              FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies),
-              mesh.X,
-              topology.BoundaryFaces,
-              adjacency,
-              mesh.Transitions,
-              labels);
-          }
+          out.RelabelledFaceCount += cleanUpLabels();
           out.FlatteningSeconds += SecondsSince(flattenStart);
           continue; // mesh.X still holds the deformed, unflattened positions
         }
