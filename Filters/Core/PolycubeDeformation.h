@@ -10,6 +10,14 @@
 // labels, chart clean-up (PolycubeCharts.h) -> splits of the edges and tets the charts would force
 // flat -> flattening: a growing penalty towards the chart planes, then the planes hard (their
 // coordinates eliminated from the unknowns) and an ARAP relaxation -> back to input units.
+//
+// With frames (FrameField guidance) the continuation starts from the frame fit of eq. 7. With
+// frames and cuts (the closed form, §4.1-4.2) everything runs on the cut mesh M_c
+// (PolycubeCutMesh.h): the copies across cut c are tied by x_plus = Pi_c x_minus + t_c, t_c
+// unknown, in every solve (CoordinateRelations.h); the fit of eq. 7 is then one linear solve;
+// only the boundary of M is aligned, labelled and flattened; labels agree across each cut;
+// charts are glued across the cuts for the clean-up and the corners, but each side keeps its own
+// plane (the two planes differ by t_c); the final flattening keeps the planes as unknowns.
 #pragma once
 
 #include "MeshTypes.h"
