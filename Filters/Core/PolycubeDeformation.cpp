@@ -1076,50 +1076,84 @@ Status ComputePolycube(const TetMesh& input,
           snapped(anchorIndex[static_cast<size_t>(i)]) = x(anchorIndex[static_cast<size_t>(i)]);
         }
       };
-      for (int attempt = 0; attempt < 50 && !energy.IsFeasible(snapped.data()); ++attempt)
+      // The vertices of the tets that `positions` inverts, and of the guarded faces it folds.
+      auto markInvertedTets = [&](const Eigen::VectorXd& positions, std::vector<char>& marked)
       {
-        const Points current = Unflat(snapped);
+        const Points current = Unflat(positions);
         for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
         {
           if (!(TetSignedVolume(current, mesh.Cells, static_cast<int>(t)) > 0.0))
           {
             for (int k = 0; k < 4; ++k)
             {
-              release(mesh.Cells(t, k));
+              marked[static_cast<size_t>(mesh.Cells(t, k))] = 1;
             }
           }
         }
+      };
+      auto markFoldedFaces = [&](const Eigen::VectorXd& positions, std::vector<char>& marked)
+      {
         for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
         {
           if (guarded[static_cast<size_t>(f)] >= 0 &&
-            !(energy.FaceOrientation(snapped.data(), static_cast<int>(f)) > 0.0))
+            !(energy.FaceOrientation(positions.data(), static_cast<int>(f)) > 0.0))
           {
             for (int k = 0; k < 3; ++k)
             {
-              release(topology.BoundaryFaces(f, k));
+              marked[static_cast<size_t>(topology.BoundaryFaces(f, k))] = 1;
             }
           }
         }
+      };
+      auto releaseMarked = [&](const std::vector<char>& marked)
+      {
+        for (int v = 0; v < mesh.VertexCount(); ++v)
+        {
+          if (marked[static_cast<size_t>(v)])
+          {
+            release(v);
+          }
+        }
+      };
+      for (int attempt = 0; attempt < 50 && !energy.IsFeasible(snapped.data()); ++attempt)
+      {
+        // Tets first: the faces are checked on the positions their releases leave.
+        std::vector<char> marked(static_cast<size_t>(mesh.VertexCount()), 0);
+        markInvertedTets(snapped, marked);
+        releaseMarked(marked);
+        std::fill(marked.begin(), marked.end(), 0);
+        markFoldedFaces(snapped, marked);
+        releaseMarked(marked);
       }
+      // The anchors with `loose` set (held by the penalty), the others (hard); returns the
+      // number of vertices with a loose anchor.
+      auto partitionAnchors = [&](const std::vector<bool>& loose,
+                                std::vector<int>& looseIndex,
+                                std::vector<double>& looseTarget,
+                                std::vector<int>& hardIndex,
+                                std::vector<double>& hardTarget)
+      {
+        std::vector<bool> looseVertex(static_cast<size_t>(mesh.VertexCount()), false);
+        for (size_t i = 0; i < anchorIndex.size(); ++i)
+        {
+          if (loose[i])
+          {
+            looseIndex.push_back(anchorIndex[i]);
+            looseTarget.push_back(anchorTarget[i]);
+            looseVertex[static_cast<size_t>(anchorIndex[i] / 3)] = true;
+          }
+          else
+          {
+            hardIndex.push_back(anchorIndex[i]);
+            hardTarget.push_back(anchorTarget[i]);
+          }
+        }
+        return static_cast<int>(std::count(looseVertex.begin(), looseVertex.end(), true));
+      };
       std::vector<int> fixedIndex, freeIndex;
       std::vector<double> fixedTarget, freeTarget;
-      std::vector<bool> unflattened(static_cast<size_t>(mesh.VertexCount()), false);
-      for (size_t i = 0; i < anchorIndex.size(); ++i)
-      {
-        if (released[i])
-        {
-          freeIndex.push_back(anchorIndex[i]);
-          freeTarget.push_back(anchorTarget[i]);
-          unflattened[static_cast<size_t>(anchorIndex[i] / 3)] = true;
-        }
-        else
-        {
-          fixedIndex.push_back(anchorIndex[i]);
-          fixedTarget.push_back(anchorTarget[i]);
-        }
-      }
       out.UnflattenedVertexCount =
-        static_cast<int>(std::count(unflattened.begin(), unflattened.end(), true));
+        partitionAnchors(released, freeIndex, freeTarget, fixedIndex, fixedTarget);
       if (!energy.IsFeasible(snapped.data()))
       {
         snapped = x; // cannot happen: releasing everything gives back the penalised positions
@@ -1146,11 +1180,7 @@ Status ComputePolycube(const TetMesh& input,
           // that the planes of charts linked through the transitions agree exactly. The start
           // is the penalised shape (it satisfies the transitions) projected onto the planes;
           // vertices of tets that projection inverts are released, as above.
-          std::vector<bool> loose(anchorIndex.size(), false);
-          for (size_t i = 0; i < anchorIndex.size(); ++i)
-          {
-            loose[i] = released[i];
-          }
+          std::vector<bool> loose = released;
           // The translations stay as the penalised shape has them: moving them would move every
           // copy on the plus side of a cut, and thin tets there would invert.
           Eigen::VectorXd translations;
@@ -1201,29 +1231,9 @@ Status ComputePolycube(const TetMesh& input,
             }
             // Release the vertices of inverted tets and folded faces, and their neighbours (the
             // projection spreads a conflict over a few tets, so one ring at a time is slow).
-            const Points current = Unflat(projected);
             std::vector<char> bad(static_cast<size_t>(mesh.VertexCount()), 0);
-            for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
-            {
-              if (!(TetSignedVolume(current, mesh.Cells, static_cast<int>(t)) > 0.0))
-              {
-                for (int k = 0; k < 4; ++k)
-                {
-                  bad[static_cast<size_t>(mesh.Cells(t, k))] = 1;
-                }
-              }
-            }
-            for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
-            {
-              if (guarded[static_cast<size_t>(f)] >= 0 &&
-                !(energy.FaceOrientation(projected.data(), static_cast<int>(f)) > 0.0))
-              {
-                for (int k = 0; k < 3; ++k)
-                {
-                  bad[static_cast<size_t>(topology.BoundaryFaces(f, k))] = 1;
-                }
-              }
-            }
+            markInvertedTets(projected, bad);
+            markFoldedFaces(projected, bad);
             std::vector<char> ring = bad;
             for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
             {
@@ -1272,21 +1282,11 @@ Status ComputePolycube(const TetMesh& input,
                                    "with the cut transitions hard: they stay within the "
                                    "flattening penalty's tolerance of their planes");
           }
-          std::vector<int> looseIndex;
-          std::vector<double> looseTarget;
-          std::vector<bool> looseVertex(static_cast<size_t>(mesh.VertexCount()), false);
-          for (size_t i = 0; i < anchorIndex.size(); ++i)
-          {
-            if (loose[i])
-            {
-              looseIndex.push_back(anchorIndex[i]);
-              looseTarget.push_back(anchorTarget[i]);
-              looseVertex[static_cast<size_t>(anchorIndex[i] / 3)] = true;
-            }
-          }
-          energy.SetAnchors(looseIndex, looseTarget);
+          std::vector<int> looseIndex, hardIndex;
+          std::vector<double> looseTarget, hardTarget;
           out.UnflattenedVertexCount =
-            static_cast<int>(std::count(looseVertex.begin(), looseVertex.end(), true));
+            partitionAnchors(loose, looseIndex, looseTarget, hardIndex, hardTarget);
+          energy.SetAnchors(looseIndex, looseTarget);
           snapped = projected;
         }
         else

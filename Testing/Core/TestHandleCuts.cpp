@@ -112,15 +112,7 @@ TetMesh VoxelSolid(int nx, int ny, int nz, Inside inside)
       out.Vertices.row(used[v]) = mesh.Vertices.row(v);
     }
   }
-  out.Cells.resize(static_cast<Eigen::Index>(tets.size()), 4);
-  for (size_t t = 0; t < tets.size(); ++t)
-  {
-    out.Cells.row(t) << tets[t][0], tets[t][1], tets[t][2], tets[t][3];
-    if (polycubehex::TetSignedVolume(out.Vertices, out.Cells, static_cast<int>(t)) < 0.0)
-    {
-      std::swap(out.Cells(t, 0), out.Cells(t, 1));
-    }
-  }
+  polycubehex_test::SetPositiveCells(out, tets);
   return out;
 }
 

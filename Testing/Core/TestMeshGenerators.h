@@ -120,6 +120,21 @@ inline void SplitPrism(const std::array<int, 3>& a,
   }
 }
 
+/// Sets mesh.Cells to `tets`, each flipped (first two corners swapped) where it is negative on
+/// mesh.Vertices.
+inline void SetPositiveCells(TetMesh& mesh, const std::vector<std::array<int, 4>>& tets)
+{
+  mesh.Cells.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (size_t t = 0; t < tets.size(); ++t)
+  {
+    mesh.Cells.row(t) << tets[t][0], tets[t][1], tets[t][2], tets[t][3];
+    if (polycubehex::TetSignedVolume(mesh.Vertices, mesh.Cells, static_cast<int>(t)) < 0.0)
+    {
+      std::swap(mesh.Cells(t, 0), mesh.Cells(t, 1));
+    }
+  }
+}
+
 /// A polar disk (or annulus, rings first..last) of radius r swept around the z axis at
 /// distance R in `stations` steps: a solid torus (first = 0) or a hollow torus (first > 0).
 inline TetMesh SweptTorus(double R, double r, int first, int last, int stations)
@@ -150,15 +165,7 @@ inline TetMesh SweptTorus(double R, double r, int first, int last, int stations)
         tets);
     }
   }
-  mesh.Cells.resize(static_cast<Eigen::Index>(tets.size()), 4);
-  for (size_t t = 0; t < tets.size(); ++t)
-  {
-    mesh.Cells.row(t) << tets[t][0], tets[t][1], tets[t][2], tets[t][3];
-    if (polycubehex::TetSignedVolume(mesh.Vertices, mesh.Cells, static_cast<int>(t)) < 0.0)
-    {
-      std::swap(mesh.Cells(t, 0), mesh.Cells(t, 1));
-    }
-  }
+  SetPositiveCells(mesh, tets);
   return mesh;
 }
 
@@ -189,15 +196,7 @@ inline TetMesh ThinTorus(double R, double r, int sides, int stations)
       SplitPrism({ a, a + i, a + i + 1 }, { b, b + i, b + i + 1 }, tets);
     }
   }
-  mesh.Cells.resize(static_cast<Eigen::Index>(tets.size()), 4);
-  for (size_t t = 0; t < tets.size(); ++t)
-  {
-    mesh.Cells.row(t) << tets[t][0], tets[t][1], tets[t][2], tets[t][3];
-    if (polycubehex::TetSignedVolume(mesh.Vertices, mesh.Cells, static_cast<int>(t)) < 0.0)
-    {
-      std::swap(mesh.Cells(t, 0), mesh.Cells(t, 1));
-    }
-  }
+  SetPositiveCells(mesh, tets);
   return mesh;
 }
 
