@@ -64,7 +64,8 @@ def main():
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
     from polycubehex.pipeline import ErrorCatcher
     from polycubehex.report import REPORT_FIELDS, format_report, write_report
-    from polycubehex.visualization import show_frame_glyphs, white_view
+    from polycubehex.visualization import (show_cuts, show_faint_boundary, show_frame_glyphs,
+                                           white_view)
 
     out = args.output_dir
     os.makedirs(out, exist_ok=True)
@@ -95,30 +96,18 @@ def main():
     simple.SaveData(os.path.join(out, name + "_hexes.vtu"), proxy=hexes)
     simple.SaveData(os.path.join(out, name + "_hexes.mesh"), proxy=hexes)  # the MEDIT writer
 
-    bounds = tets.GetDataInformation().GetBounds()
-    diagonal = sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
     pictures = []
 
     # Cuts: the boundary faint, each cut surface in its own colour, the handle loops as tubes.
     view = white_view(args.size)
-    boundary = simple.Show(simple.ExtractSurface(Input=tets), view)
-    boundary.Opacity = 0.25
-    boundary.ColorArrayName = ["POINTS", ""]
-    surfaces = simple.Show(simple.OutputPort(cuts, 1), view)
-    simple.ColorBy(surfaces, ("CELLS", "CutId"))
-    loops = simple.Tube(Input=simple.OutputPort(cuts, 2), Radius=0.003 * diagonal)
-    tubes = simple.Show(loops, view)
-    tubes.ColorArrayName = ["POINTS", ""]
-    tubes.DiffuseColor = [0, 0, 0]
+    show_cuts(tets, cuts, view)
     oblique(view)
     pictures.append(("Cuts (§2): the boundary faint, one cut surface per handle (coloured by"
                      " CutId), the handle loops as black tubes",
                      save(view, out, name + "_cuts.png", args.size)))
 
     view = white_view(args.size)
-    outline = simple.Show(simple.ExtractSurface(Input=tets), view)
-    outline.Opacity = 0.12
-    outline.ColorArrayName = ["POINTS", ""]
+    show_faint_boundary(tets, view, 0.12)
     show_frame_glyphs(frames, view)
     oblique(view)
     pictures.append(("Frame field (§3): the three frame axes at sample points inside the"
@@ -131,9 +120,7 @@ def main():
     charts.LookupTable.ApplyPreset("Rainbow Uniform", True)
     charts.LookupTable.RescaleTransferFunction(0, 5)
     black_bar(charts.LookupTable, view, "PolycubeLabel")
-    view.CameraPosition = [1, -1.5, 1.2]
-    view.CameraFocalPoint = [0, 0, 0]
-    view.CameraViewUp = [0, 0, 1]
+    oblique(view)
     pictures.append(("Polycube (§4.2): the deformed boundary, each face coloured by its label"
                      " 0..5 = +X -X +Y -Y +Z -Z",
                      save(view, out, name + "_polycube.png", args.size)))
@@ -148,9 +135,7 @@ def main():
     simple.ColorBy(shown, ("CELLS", "ScaledJacobian"))
     lut.RescaleTransferFunction(-0.2, 1.0)
     black_bar(lut, view, "scaled Jacobian")
-    view.CameraPosition = [1, -1.5, 1.2]
-    view.CameraFocalPoint = [0, 0, 0]
-    view.CameraViewUp = [0, 0, 1]
+    oblique(view)
     pictures.append(("Hex mesh (§4.3): the boundary hexes with their edges, coloured by scaled"
                      " Jacobian (blue 1 = a perfect cube, red at or below 0 = inverted)",
                      save(view, out, name + "_hexes.png", args.size)))

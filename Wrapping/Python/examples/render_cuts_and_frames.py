@@ -22,7 +22,8 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=[1200, 900])
     args = parser.parse_args()
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    from polycubehex.visualization import show_frame_glyphs, white_view
+    from polycubehex.visualization import (show_cuts, show_faint_boundary, show_frame_glyphs,
+                                           white_view)
 
     name = os.path.splitext(os.path.basename(args.model))[0]
     os.makedirs(args.output_dir, exist_ok=True)
@@ -33,18 +34,7 @@ def main():
 
     # The cuts, coloured by CutId, with their handle loops as black tubes.
     view = white_view(args.size)
-    boundary = simple.Show(simple.ExtractSurface(Input=tets), view)
-    boundary.Opacity = 0.25
-    boundary.ColorArrayName = ["POINTS", ""]
-    surfaces = simple.Show(simple.OutputPort(cuts, 1), view)
-    simple.ColorBy(surfaces, ("CELLS", "CutId"))
-    loops = simple.Tube(Input=simple.OutputPort(cuts, 2))
-    bounds = tets.GetDataInformation().GetBounds()
-    diagonal = sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
-    loops.Radius = 0.003 * diagonal
-    tubes = simple.Show(loops, view)
-    tubes.ColorArrayName = ["POINTS", ""]
-    tubes.DiffuseColor = [0, 0, 0]
+    show_cuts(tets, cuts, view)
     view.ResetCamera()
     simple.SaveScreenshot(os.path.join(args.output_dir, name + "_cuts.png"), view,
                           ImageResolution=args.size)
@@ -53,9 +43,7 @@ def main():
     frames = FrameField(Input=cuts)  # noqa: F821
     frames.MaximumGlyphCount = 2500
     view = white_view(args.size)
-    outline = simple.Show(simple.ExtractSurface(Input=tets), view)
-    outline.Opacity = 0.12
-    outline.ColorArrayName = ["POINTS", ""]
+    show_faint_boundary(tets, view, 0.12)
     show_frame_glyphs(frames, view)
     view.ResetCamera()
     simple.SaveScreenshot(os.path.join(args.output_dir, name + "_frames.png"), view,

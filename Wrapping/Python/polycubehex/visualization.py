@@ -21,6 +21,33 @@ def white_view(size=(1200, 900)):
     return view
 
 
+def show_faint_boundary(data, view, opacity=0.25):
+    """Shows the boundary surface of `data` in plain grey, see-through."""
+    from paraview import simple
+
+    boundary = simple.Show(simple.ExtractSurface(Input=data), view)
+    boundary.Opacity = opacity
+    boundary.ColorArrayName = ["POINTS", ""]
+    return boundary
+
+
+def show_cuts(tets, cuts, view):
+    """Shows Handle Cut's output: the model's boundary faint, each cut surface coloured by CutId,
+    and the handle loops as black tubes (radius 0.3 % of the bounding-box diagonal)."""
+    from paraview import simple
+
+    show_faint_boundary(tets, view)
+    surfaces = simple.Show(simple.OutputPort(cuts, 1), view)
+    simple.ColorBy(surfaces, ("CELLS", "CutId"))
+    bounds = tets.GetDataInformation().GetBounds()
+    diagonal = sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
+    tubes = simple.Show(simple.Tube(Input=simple.OutputPort(cuts, 2), Radius=0.003 * diagonal),
+                        view)
+    tubes.ColorArrayName = ["POINTS", ""]
+    tubes.DiffuseColor = [0, 0, 0]
+    return surfaces
+
+
 COLORS = (("FrameU", (0.85, 0.1, 0.1)), ("FrameV", (0.1, 0.65, 0.1)), ("FrameW", (0.1, 0.2, 0.9)))
 
 
