@@ -32,6 +32,11 @@ struct PolycubeTetMesh
   /// #T by 4 `PolycubeLabels`: label 0..5 (+X, -X, +Y, -Y, +Z, -Z) of local face k (vtkTetra
   /// face order) when it lies on the boundary, -1 otherwise.
   Tets FaceLabels;
+  /// The cuts of a closed-form polycube (both empty for a uniform one): Pi_c per cut
+  /// (CutTransitions) and t_c in the units of PolycubeVertices (CutTranslations). The cut faces
+  /// are the unlabelled boundary faces (PolycubeSeams.h).
+  std::vector<Eigen::Matrix3i> CutRotations;
+  std::vector<Eigen::Vector3d> CutTranslations;
 };
 
 /// Settings of extractHexMesh; the names match the filter's properties.
