@@ -55,6 +55,10 @@ public:
   /// After Build: the extra unknowns for a variable vector y.
   Eigen::VectorXd Extras(const Eigen::VectorXd& y) const;
 
+  /// After Build: the variables (indices into y) that are free extras, i.e. the unknown
+  /// translations the relations left free.
+  const std::vector<int>& FreeExtraVariables() const { return this->FreeExtraVariable; }
+
   /// After Build: the number of relations that fixed a representative or constrained t.
   int ClosedLoopCount() const { return this->LoopCount; }
 

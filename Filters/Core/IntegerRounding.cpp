@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "IntegerRounding.h"
 
+#include "CoordinateRelations.h"
 #include "PolycubePlaneRelaxation.h"
 
 #include "DisjointSets.h"
@@ -435,11 +436,19 @@ struct PolycubePlaneSolver::Impl
 {
   Tets Cells;
   Points Reference;
-  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> VertexPlane;
-  /// Index of coordinate (v, a) among the free coordinates, or -1 when it lies on a plane.
-  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> FreeIndex;
+  /// The coordinates (x[3v+a], row-major positions) as x = Bf f + Bz z + Offset: f the free
+  /// variables, z the integer ones (plane values, then free cut translations). Each row has at
+  /// most one free entry (a coordinate is a copy of one free representative or lies on a plane).
+  Eigen::SparseMatrix<double> Bf;
+  Eigen::SparseMatrix<double> Bz;
+  Eigen::VectorXd Offset;
+  /// #3V: the free variable of coordinate i and its coefficient (+-1), or -1.
+  std::vector<int> RowFree;
+  std::vector<double> RowFreeSign;
+  /// Per free variable, the coordinates it moves (its column of Bf).
+  std::vector<std::vector<std::pair<int, double>>> FreeRows;
   int FreeCount = 0;
-  int PlaneCount = 0;
+  int IntegerCount = 0;
   std::vector<double> RestVolume;      ///< #T volumes in the rest positions
   std::vector<double> ReferenceVolume; ///< #T volumes in the reference polycube
   /// Per tet, the gradients of the 4 barycentric coordinates on the rest tet (rows).
@@ -449,72 +458,272 @@ struct PolycubePlaneSolver::Impl
   /// Per vertex, its tets.
   std::vector<std::vector<int>> VertexTets;
   Eigen::SparseMatrix<double> Acc; ///< free x free block
-  Eigen::SparseMatrix<double> Acp; ///< free x plane block
+  Eigen::SparseMatrix<double> Acz; ///< free x integer block
   Eigen::VectorXd Bc;              ///< free part of the linear term
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> Factor;
+  /// With cuts: the relations, to read the cut translations back from z.
+  std::unique_ptr<CoordinateRelations> Relations;
+  std::vector<int> IntegerColumn; ///< #Z: column of the relations' reduction
+  int ReducedCount = 0;           ///< columns of the relations' reduction
+  int CutCount = 0;
+  /// Per chart plane: the row of one of its coordinates (its value is that coordinate).
+  std::vector<int> PlaneRow;
 };
 
 PolycubePlaneSolver::PolycubePlaneSolver() = default;
 PolycubePlaneSolver::~PolycubePlaneSolver() = default;
 
+namespace
+{
+/// The uniform case: every coordinate on a plane is that plane's value, the others are free.
+void UniformVariables(const ChartPlanes& charts,
+  int vertexCount,
+  std::vector<Eigen::Triplet<double>>& free,
+  std::vector<Eigen::Triplet<double>>& integer,
+  int& freeCount,
+  int& integerCount)
+{
+  freeCount = 0;
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const int p = charts.VertexPlane(v, a);
+      if (p >= 0)
+      {
+        integer.emplace_back(3 * v + a, p, 1.0);
+      }
+      else
+      {
+        free.emplace_back(3 * v + a, freeCount++, 1.0);
+      }
+    }
+  }
+  integerCount = static_cast<int>(charts.PlaneAxis.size());
+}
+} // namespace
+
 Status PolycubePlaneSolver::Build(const Points& rest,
   const Points& reference,
   const Tets& cells,
-  const ChartPlanes& charts)
+  const ChartPlanes& charts,
+  const PolycubeSeams* seams)
 {
   this->Data = std::make_unique<Impl>();
   Impl& d = *this->Data;
   const int vertexCount = static_cast<int>(reference.rows());
   const int tetCount = static_cast<int>(cells.rows());
+  const int planeCount = static_cast<int>(charts.PlaneAxis.size());
+  const int n = 3 * vertexCount;
   d.Cells = cells;
   d.Reference = reference;
-  d.VertexPlane = charts.VertexPlane;
-  d.PlaneCount = static_cast<int>(charts.PlaneAxis.size());
   if (charts.VertexPlane.rows() != vertexCount)
   {
     return Status::Failure("the charts were computed for another vertex count");
   }
-
-  d.FreeIndex.setConstant(vertexCount, 3, -1);
-  d.FreeCount = 0;
-  for (int v = 0; v < vertexCount; ++v)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      if (d.VertexPlane(v, a) < 0)
-      {
-        d.FreeIndex(v, a) = d.FreeCount++;
-      }
-    }
-  }
-
-  // Reference plane values: the mean coordinate of their vertices.
-  this->RefPlanes = Eigen::VectorXd::Zero(d.PlaneCount);
-  Eigen::VectorXd counts = Eigen::VectorXd::Zero(d.PlaneCount);
-  for (int v = 0; v < vertexCount; ++v)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      const int p = d.VertexPlane(v, a);
-      if (p >= 0)
-      {
-        this->RefPlanes[p] += reference(v, a);
-        counts[p] += 1.0;
-      }
-    }
-  }
-  for (int p = 0; p < d.PlaneCount; ++p)
-  {
-    this->RefPlanes[p] /= std::max(1.0, counts[p]);
-  }
-
-  // FEM stiffness of each tet on the rest positions: K_ij = V grad(l_i) . grad(l_j), identical
-  // for the three axes. The linear term is K times the reference, so that the reference is the
-  // unconstrained minimiser.
   if (rest.rows() != vertexCount)
   {
     return Status::Failure("the rest and reference positions differ in size");
   }
+  const Eigen::VectorXd referenceVector =
+    Eigen::Map<const Eigen::VectorXd>(reference.data(), n);
+  d.PlaneRow.assign(static_cast<size_t>(planeCount), -1);
+  for (int v = vertexCount - 1; v >= 0; --v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (charts.VertexPlane(v, a) >= 0)
+      {
+        d.PlaneRow[static_cast<size_t>(charts.VertexPlane(v, a))] = 3 * v + a;
+      }
+    }
+  }
+
+  // 1. The variables.
+  std::vector<Eigen::Triplet<double>> freeTriplets;
+  std::vector<Eigen::Triplet<double>> integerTriplets;
+  d.Offset.setZero(n);
+  if (!seams || seams->Empty())
+  {
+    UniformVariables(charts, vertexCount, freeTriplets, integerTriplets, d.FreeCount, d.IntegerCount);
+    this->Pairs = charts.PlanePairs;
+    this->VariablePlane.resize(static_cast<size_t>(planeCount));
+    std::iota(this->VariablePlane.begin(), this->VariablePlane.end(), 0);
+  }
+  else
+  {
+    // Copies across the cuts (x_plus = Pi x_minus + t_c, extras 3c..3c+2) and every coordinate
+    // of a plane equal to the plane's first one, reduced by identifying variables.
+    d.CutCount = seams->CutCount();
+    std::vector<int> extraAxis(static_cast<size_t>(3 * d.CutCount));
+    for (size_t k = 0; k < extraAxis.size(); ++k)
+    {
+      extraAxis[k] = static_cast<int>(k % 3);
+    }
+    d.Relations = std::make_unique<CoordinateRelations>(vertexCount, 3 * d.CutCount, extraAxis);
+    for (const SeamCopy& copy : seams->Copies)
+    {
+      const Eigen::Matrix3i& pi = seams->Rotations[static_cast<size_t>(copy.Cut)];
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int b = 0; b < 3; ++b)
+        {
+          if (pi(a, b) != 0)
+          {
+            d.Relations->Relate(
+              3 * copy.Plus + a, 3 * copy.Minus + b, pi(a, b), { { 3 * copy.Cut + a, 1.0 } });
+          }
+        }
+      }
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      const int p = charts.VertexPlane(i / 3, i % 3);
+      if (p >= 0 && d.PlaneRow[static_cast<size_t>(p)] != i)
+      {
+        d.Relations->Relate(i, d.PlaneRow[static_cast<size_t>(p)], 1.0);
+      }
+    }
+    VariableReduction reduction;
+    Status status = d.Relations->Build(reduction);
+    if (!status)
+    {
+      return Status::Failure("the cut transitions and the chart planes contradict each other: " +
+        status.Message());
+    }
+    d.ReducedCount = reduction.VariableCount();
+    // A column is an integer variable when it carries a plane or is a free translation.
+    std::vector<int> kind(static_cast<size_t>(d.ReducedCount), 0); // 0 free, 1 plane, 2 t
+    for (int column : d.Relations->FreeExtraVariables())
+    {
+      kind[static_cast<size_t>(column)] = 2;
+    }
+    for (int column = 0; column < d.ReducedCount; ++column)
+    {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(reduction.B, column); it; ++it)
+      {
+        const int i = static_cast<int>(it.row());
+        if (kind[static_cast<size_t>(column)] == 0 && charts.VertexPlane(i / 3, i % 3) >= 0)
+        {
+          kind[static_cast<size_t>(column)] = 1;
+        }
+      }
+    }
+    std::vector<int> index(static_cast<size_t>(d.ReducedCount), -1);
+    d.FreeCount = 0;
+    d.IntegerCount = 0;
+    for (int column = 0; column < d.ReducedCount; ++column)
+    {
+      if (kind[static_cast<size_t>(column)] == 0)
+      {
+        index[static_cast<size_t>(column)] = d.FreeCount++;
+      }
+      else
+      {
+        index[static_cast<size_t>(column)] = d.IntegerCount++;
+        d.IntegerColumn.push_back(column);
+      }
+    }
+    for (int column = 0; column < d.ReducedCount; ++column)
+    {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(reduction.B, column); it; ++it)
+      {
+        (kind[static_cast<size_t>(column)] == 0 ? freeTriplets : integerTriplets)
+          .emplace_back(static_cast<int>(it.row()), index[static_cast<size_t>(column)], it.value());
+      }
+    }
+    d.Offset = reduction.Offset;
+    // The reference values of the integer variables: the least-squares fit of the reference.
+    const Eigen::VectorXd fit = reduction.Restrict(referenceVector);
+    this->RefPlanes.resize(d.IntegerCount);
+    for (int z = 0; z < d.IntegerCount; ++z)
+    {
+      this->RefPlanes[z] = fit[d.IntegerColumn[static_cast<size_t>(z)]];
+    }
+    // Each plane's value as a row of (Bz z + Offset); a separated pair of planes stays a pair of
+    // integer variables when both are the same function of the translations (one frame).
+    Eigen::SparseMatrix<double, Eigen::RowMajor> rows(n, d.IntegerCount);
+    rows.setFromTriplets(integerTriplets.begin(), integerTriplets.end());
+    this->VariablePlane.assign(static_cast<size_t>(d.IntegerCount), -1);
+    std::vector<int> planeVariable(static_cast<size_t>(planeCount), -1);
+    std::vector<double> planeSign(static_cast<size_t>(planeCount), 0.0);
+    std::vector<std::map<int, double>> planeTerms(static_cast<size_t>(planeCount));
+    for (int p = 0; p < planeCount; ++p)
+    {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(
+             rows, d.PlaneRow[static_cast<size_t>(p)]);
+           it;
+           ++it)
+      {
+        const int z = static_cast<int>(it.col());
+        if (kind[static_cast<size_t>(d.IntegerColumn[static_cast<size_t>(z)])] == 1)
+        {
+          planeVariable[static_cast<size_t>(p)] = z;
+          planeSign[static_cast<size_t>(p)] = it.value();
+          if (this->VariablePlane[static_cast<size_t>(z)] < 0)
+          {
+            this->VariablePlane[static_cast<size_t>(z)] = p;
+          }
+        }
+        else
+        {
+          planeTerms[static_cast<size_t>(p)][z] = it.value();
+        }
+      }
+    }
+    for (const auto& pair : charts.PlanePairs)
+    {
+      const size_t p = static_cast<size_t>(pair[0]);
+      const size_t q = static_cast<size_t>(pair[1]);
+      if (planeVariable[p] >= 0 && planeVariable[q] >= 0 && planeVariable[p] != planeVariable[q] &&
+        planeSign[p] == planeSign[q] && planeTerms[p] == planeTerms[q])
+      {
+        this->Pairs.push_back({ planeVariable[p], planeVariable[q] });
+      }
+    }
+  }
+  d.Bf.resize(n, d.FreeCount);
+  d.Bf.setFromTriplets(freeTriplets.begin(), freeTriplets.end());
+  d.Bz.resize(n, d.IntegerCount);
+  d.Bz.setFromTriplets(integerTriplets.begin(), integerTriplets.end());
+  d.RowFree.assign(static_cast<size_t>(n), -1);
+  d.RowFreeSign.assign(static_cast<size_t>(n), 0.0);
+  d.FreeRows.assign(static_cast<size_t>(d.FreeCount), {});
+  for (int column = 0; column < d.FreeCount; ++column)
+  {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(d.Bf, column); it; ++it)
+    {
+      d.RowFree[static_cast<size_t>(it.row())] = column;
+      d.RowFreeSign[static_cast<size_t>(it.row())] = it.value();
+      d.FreeRows[static_cast<size_t>(column)].emplace_back(static_cast<int>(it.row()), it.value());
+    }
+  }
+  if (!seams || seams->Empty())
+  {
+    // Reference plane values: the mean coordinate of their vertices.
+    this->RefPlanes = Eigen::VectorXd::Zero(d.IntegerCount);
+    Eigen::VectorXd counts = Eigen::VectorXd::Zero(d.IntegerCount);
+    for (int v = 0; v < vertexCount; ++v)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        const int p = charts.VertexPlane(v, a);
+        if (p >= 0)
+        {
+          this->RefPlanes[p] += reference(v, a);
+          counts[p] += 1.0;
+        }
+      }
+    }
+    for (int p = 0; p < d.IntegerCount; ++p)
+    {
+      this->RefPlanes[p] /= std::max(1.0, counts[p]);
+    }
+  }
+
+  // 2. FEM stiffness of each tet on the rest positions: K_ij = V grad(l_i) . grad(l_j),
+  // identical for the three axes. The linear term is K times the reference, so that the
+  // reference is the unconstrained minimiser.
   d.VertexTets.assign(vertexCount, {});
   for (int t = 0; t < tetCount; ++t)
   {
@@ -527,11 +736,8 @@ Status PolycubePlaneSolver::Build(const Points& rest,
   d.ReferenceVolume.resize(tetCount);
   d.Gradients.resize(tetCount);
   d.ReferenceJacobian.resize(tetCount);
-  std::vector<Eigen::Triplet<double>> cc;
-  std::vector<Eigen::Triplet<double>> cp;
-  std::vector<Eigen::Triplet<double>> pp;
-  Eigen::VectorXd bp = Eigen::VectorXd::Zero(d.PlaneCount);
-  d.Bc = Eigen::VectorXd::Zero(d.FreeCount);
+  std::vector<Eigen::Triplet<double>> stiffnessTriplets;
+  stiffnessTriplets.reserve(static_cast<size_t>(48 * tetCount));
   for (int t = 0; t < tetCount; ++t)
   {
     Eigen::Matrix3d edges;
@@ -560,48 +766,24 @@ Status PolycubePlaneSolver::Build(const Points& rest,
     {
       for (int i = 0; i < 4; ++i)
       {
-        const int vi = cells(t, i);
-        double row = 0.0;
         for (int j = 0; j < 4; ++j)
         {
-          row += stiffness(i, j) * reference(cells(t, j), a);
-        }
-        const int fi = d.FreeIndex(vi, a);
-        if (fi >= 0)
-        {
-          d.Bc[fi] += row;
-        }
-        else
-        {
-          bp[d.VertexPlane(vi, a)] += row;
-        }
-        for (int j = 0; j < 4; ++j)
-        {
-          const int vj = cells(t, j);
-          const int fj = d.FreeIndex(vj, a);
-          const double value = stiffness(i, j);
-          if (fi >= 0 && fj >= 0)
-          {
-            cc.emplace_back(fi, fj, value);
-          }
-          else if (fi >= 0)
-          {
-            cp.emplace_back(fi, d.VertexPlane(vj, a), value);
-          }
-          else if (fj < 0)
-          {
-            pp.emplace_back(d.VertexPlane(vi, a), d.VertexPlane(vj, a), value);
-          }
+          stiffnessTriplets.emplace_back(3 * cells(t, i) + a, 3 * cells(t, j) + a, stiffness(i, j));
         }
       }
     }
   }
-  d.Acc.resize(d.FreeCount, d.FreeCount);
-  d.Acc.setFromTriplets(cc.begin(), cc.end());
-  d.Acp.resize(d.FreeCount, d.PlaneCount);
-  d.Acp.setFromTriplets(cp.begin(), cp.end());
-  Eigen::SparseMatrix<double> app(d.PlaneCount, d.PlaneCount);
-  app.setFromTriplets(pp.begin(), pp.end());
+  Eigen::SparseMatrix<double> laplacian(n, n);
+  laplacian.setFromTriplets(stiffnessTriplets.begin(), stiffnessTriplets.end());
+  const Eigen::VectorXd linear = laplacian * (referenceVector - d.Offset);
+  const Eigen::SparseMatrix<double> bft = d.Bf.transpose();
+  const Eigen::SparseMatrix<double> bzt = d.Bz.transpose();
+  const Eigen::SparseMatrix<double> lbf = laplacian * d.Bf;
+  d.Acc = bft * lbf;
+  d.Acz = bft * (laplacian * d.Bz);
+  const Eigen::SparseMatrix<double> azz = bzt * (laplacian * d.Bz);
+  d.Bc = bft * linear;
+  const Eigen::VectorXd bz = bzt * linear;
 
   if (d.FreeCount > 0)
   {
@@ -613,23 +795,24 @@ Status PolycubePlaneSolver::Build(const Points& rest,
     }
   }
 
-  // Schur complement onto the planes: H = App - Apc Acc^-1 Acp, g = bp - Apc Acc^-1 bc.
-  this->H = Eigen::MatrixXd(app);
-  this->G = bp;
+  // 3. Schur complement onto the integer variables: H = Azz - Azc Acc^-1 Acz,
+  // g = bz - Azc Acc^-1 bc.
+  this->H = Eigen::MatrixXd(azz);
+  this->G = bz;
   if (d.FreeCount > 0)
   {
-    const Eigen::SparseMatrix<double> apc = d.Acp.transpose();
-    for (int p = 0; p < d.PlaneCount; ++p)
+    const Eigen::SparseMatrix<double> azc = d.Acz.transpose();
+    for (int p = 0; p < d.IntegerCount; ++p)
     {
-      const Eigen::VectorXd column = Eigen::VectorXd(d.Acp.col(p));
+      const Eigen::VectorXd column = Eigen::VectorXd(d.Acz.col(p));
       if (column.squaredNorm() == 0.0)
       {
         continue;
       }
       const Eigen::VectorXd z = d.Factor.solve(column);
-      this->H.col(p) -= apc * z;
+      this->H.col(p) -= azc * z;
     }
-    this->G -= apc * d.Factor.solve(d.Bc);
+    this->G -= azc * d.Factor.solve(d.Bc);
   }
   this->H = 0.5 * (this->H + this->H.transpose()).eval();
   return Status::Success();
@@ -639,20 +822,47 @@ void PolycubePlaneSolver::Solve(const Eigen::VectorXd& planes, Points& positions
 {
   const Impl& d = *this->Data;
   const int vertexCount = static_cast<int>(d.Reference.rows());
-  Eigen::VectorXd free;
+  Eigen::VectorXd x = d.Bz * planes + d.Offset;
   if (d.FreeCount > 0)
   {
-    free = d.Factor.solve(d.Bc - d.Acp * planes);
+    x += d.Bf * d.Factor.solve(d.Bc - d.Acz * planes);
   }
   positions.resize(vertexCount, 3);
-  for (int v = 0; v < vertexCount; ++v)
+  Eigen::Map<Eigen::VectorXd>(positions.data(), 3 * vertexCount) = x;
+}
+
+std::vector<Eigen::Vector3d> PolycubePlaneSolver::CutTranslations(
+  const Eigen::VectorXd& planes) const
+{
+  const Impl& d = *this->Data;
+  std::vector<Eigen::Vector3d> result(static_cast<size_t>(d.CutCount), Eigen::Vector3d::Zero());
+  if (!d.Relations)
   {
-    for (int a = 0; a < 3; ++a)
-    {
-      const int p = d.VertexPlane(v, a);
-      positions(v, a) = p >= 0 ? planes[p] : free[d.FreeIndex(v, a)];
-    }
+    return result;
   }
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(d.ReducedCount);
+  for (int z = 0; z < d.IntegerCount; ++z)
+  {
+    y[d.IntegerColumn[static_cast<size_t>(z)]] = planes[z];
+  }
+  const Eigen::VectorXd t = d.Relations->Extras(y);
+  for (int c = 0; c < d.CutCount; ++c)
+  {
+    result[static_cast<size_t>(c)] = t.segment<3>(3 * c);
+  }
+  return result;
+}
+
+Eigen::VectorXd PolycubePlaneSolver::ChartPlaneValues(const Eigen::VectorXd& planes) const
+{
+  const Impl& d = *this->Data;
+  const Eigen::VectorXd x = d.Bz * planes + d.Offset;
+  Eigen::VectorXd values(static_cast<Eigen::Index>(d.PlaneRow.size()));
+  for (size_t p = 0; p < d.PlaneRow.size(); ++p)
+  {
+    values[static_cast<Eigen::Index>(p)] = d.PlaneRow[p] >= 0 ? x[d.PlaneRow[p]] : 0.0;
+  }
+  return values;
 }
 
 double PolycubePlaneSolver::Untangle(Points& positions, double target) const
@@ -683,7 +893,30 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
     for (int v : vertices)
     {
-      const std::vector<int>& around = d.VertexTets[v];
+      // A free variable moves every copy of its coordinate (across cuts), so the tets that
+      // count are those around all of them.
+      std::vector<int> around;
+      auto gather = [&](int variable)
+      {
+        for (const auto& row : d.FreeRows[static_cast<size_t>(variable)])
+        {
+          const std::vector<int>& tets = d.VertexTets[row.first / 3];
+          around.insert(around.end(), tets.begin(), tets.end());
+        }
+      };
+      for (int a = 0; a < 3; ++a)
+      {
+        if (d.RowFree[static_cast<size_t>(3 * v + a)] >= 0)
+        {
+          gather(d.RowFree[static_cast<size_t>(3 * v + a)]);
+        }
+      }
+      if (around.empty())
+      {
+        continue;
+      }
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
       auto worst = [&]()
       {
         double result = std::numeric_limits<double>::max();
@@ -700,7 +933,7 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
       }
       // Step: a fraction of the shortest reference edge at v.
       double length = std::numeric_limits<double>::max();
-      for (int t : around)
+      for (int t : d.VertexTets[v])
       {
         for (int k = 0; k < 4; ++k)
         {
@@ -711,6 +944,13 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
           }
         }
       }
+      auto move = [&](int variable, double delta)
+      {
+        for (const auto& row : d.FreeRows[static_cast<size_t>(variable)])
+        {
+          positions(row.first / 3, row.first % 3) += row.second * delta;
+        }
+      };
       int moves = 0;
       for (double step = 0.5 * length; step > length / 512.0 && moves < 64 && current < target;
            ++moves)
@@ -718,13 +958,15 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
         bool improved = false;
         for (int a = 0; a < 3; ++a)
         {
-          if (d.VertexPlane(v, a) >= 0)
+          const int variable = d.RowFree[static_cast<size_t>(3 * v + a)];
+          if (variable < 0)
           {
             continue;
           }
+          const double sign0 = d.RowFreeSign[static_cast<size_t>(3 * v + a)];
           for (double sign : { 1.0, -1.0 })
           {
-            positions(v, a) += sign * step;
+            move(variable, sign * sign0 * step);
             const double moved = worst();
             if (moved > current)
             {
@@ -733,7 +975,7 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
             }
             else
             {
-              positions(v, a) -= sign * step;
+              move(variable, -sign * sign0 * step);
             }
           }
         }
@@ -758,8 +1000,8 @@ class UntangleFunction : public ceres::FirstOrderFunction
 public:
   UntangleFunction(const Points& start,
     const Tets& cells,
-    const Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>& freeIndex,
-    int freeCount,
+    const Eigen::SparseMatrix<double>& freeMap,
+    const Eigen::VectorXd& constant,
     const std::vector<Eigen::Matrix<double, 4, 3>>& gradients,
     const std::vector<Eigen::Matrix3d>& targets,
     const std::vector<double>& restVolume,
@@ -767,8 +1009,9 @@ public:
     double target,
     double weight)
     : Cells(cells)
-    , FreeIndex(freeIndex)
-    , FreeCount(freeCount)
+    , FreeMap(freeMap)
+    , FreeMapTransposed(freeMap.transpose())
+    , Constant(constant)
     , Gradients(gradients)
     , Targets(targets)
     , RestVolume(restVolume)
@@ -780,22 +1023,13 @@ public:
     this->TotalVolume = std::accumulate(restVolume.begin(), restVolume.end(), 0.0);
   }
 
-  int NumParameters() const override { return this->FreeCount; }
+  int NumParameters() const override { return static_cast<int>(this->FreeMap.cols()); }
 
-  /// Writes the free coordinates y into the positions.
+  /// Writes the positions x = FreeMap y + Constant.
   void Scatter(const double* y, Points& x) const
   {
-    for (int v = 0; v < x.rows(); ++v)
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        const int f = this->FreeIndex(v, a);
-        if (f >= 0)
-        {
-          x(v, a) = y[f];
-        }
-      }
-    }
+    const Eigen::Map<const Eigen::VectorXd> free(y, this->FreeMap.cols());
+    Eigen::Map<Eigen::VectorXd>(x.data(), x.size()) = this->FreeMap * free + this->Constant;
   }
 
   bool Evaluate(const double* y, double* cost, double* gradient) const override
@@ -852,25 +1086,17 @@ public:
     *cost = energy;
     if (gradient)
     {
-      for (int v = 0; v < g.rows(); ++v)
-      {
-        for (int a = 0; a < 3; ++a)
-        {
-          const int f = this->FreeIndex(v, a);
-          if (f >= 0)
-          {
-            gradient[f] = g(v, a);
-          }
-        }
-      }
+      Eigen::Map<Eigen::VectorXd>(gradient, this->FreeMap.cols()) =
+        this->FreeMapTransposed * Eigen::Map<const Eigen::VectorXd>(g.data(), g.size());
     }
     return true;
   }
 
 private:
   const Tets& Cells;
-  const Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>& FreeIndex;
-  int FreeCount;
+  const Eigen::SparseMatrix<double>& FreeMap;
+  const Eigen::SparseMatrix<double> FreeMapTransposed;
+  const Eigen::VectorXd Constant;
   const std::vector<Eigen::Matrix<double, 4, 3>>& Gradients;
   const std::vector<Eigen::Matrix3d>& Targets;
   const std::vector<double>& RestVolume;
@@ -890,24 +1116,23 @@ double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target) c
   {
     return ratio;
   }
+  // The free variables read from one of their coordinates; the rest of x stays as it is.
   std::vector<double> y(d.FreeCount);
-  for (int v = 0; v < positions.rows(); ++v)
+  for (int f = 0; f < d.FreeCount; ++f)
   {
-    for (int a = 0; a < 3; ++a)
-    {
-      if (d.FreeIndex(v, a) >= 0)
-      {
-        y[d.FreeIndex(v, a)] = positions(v, a);
-      }
-    }
+    const auto& row = d.FreeRows[static_cast<size_t>(f)].front();
+    y[static_cast<size_t>(f)] = positions(row.first / 3, row.first % 3) / row.second;
   }
+  const Eigen::VectorXd constant =
+    Eigen::Map<const Eigen::VectorXd>(positions.data(), positions.size()) -
+    d.Bf * Eigen::Map<const Eigen::VectorXd>(y.data(), d.FreeCount);
   // Escalate the penalty until every tet is above half the target (or give up).
   for (double weight : { 1e2, 1e4, 1e6 })
   {
     auto* function = new UntangleFunction(positions,
       d.Cells,
-      d.FreeIndex,
-      d.FreeCount,
+      d.Bf,
+      constant,
       d.Gradients,
       d.ReferenceJacobian,
       d.RestVolume,
@@ -971,12 +1196,14 @@ double DistortionEnergy(const Points& x,
 class SeparationGraph
 {
 public:
-  SeparationGraph(const ChartPlanes& charts, const Eigen::VectorXd& reference, double tol)
+  SeparationGraph(const std::vector<std::array<int, 2>>& pairs,
+    const Eigen::VectorXd& reference,
+    double tol)
   {
     const int planeCount = static_cast<int>(reference.size());
     this->Up.assign(planeCount, {});
     this->Down.assign(planeCount, {});
-    for (const auto& pair : charts.PlanePairs)
+    for (const auto& pair : pairs)
     {
       const double gap = reference[pair[1]] - reference[pair[0]];
       if (std::fabs(gap) <= tol)
@@ -1291,16 +1518,24 @@ Status GreedyRound(const PolycubePlaneSolver& solver,
     }
     if (!accepted)
     {
+      const int plane = solver.PlaneOfVariable()[static_cast<size_t>(chosen)];
       int chart = 0;
       while (
-        chart < static_cast<int>(charts.ChartPlane.size()) && charts.ChartPlane[chart] != chosen)
+        chart < static_cast<int>(charts.ChartPlane.size()) && charts.ChartPlane[chart] != plane)
       {
         ++chart;
       }
       std::ostringstream message;
-      message << "integer rounding failed: no integer near " << planes[chosen] << " keeps chart "
-              << chart << " (" << LabelNames[charts.ChartLabel[chart]]
-              << ") from collapsing a chart or inverting a tet; increase the resolution";
+      message << "integer rounding failed: no integer near " << planes[chosen] << " keeps ";
+      if (plane >= 0 && chart < static_cast<int>(charts.ChartPlane.size()))
+      {
+        message << "chart " << chart << " (" << LabelNames[charts.ChartLabel[chart]] << ")";
+      }
+      else
+      {
+        message << "a cut translation";
+      }
+      message << " from collapsing a chart or inverting a tet; increase the resolution";
       return Status::Failure(message.str());
     }
   }
@@ -1314,15 +1549,17 @@ Status roundPolycubePlanes(const Points& rest,
   const ChartPlanes& charts,
   const IntegerRoundingParameters& params,
   IntegerRoundingResult& result,
-  const Progress& progress)
+  const Progress& progress,
+  const PolycubeSeams* seams)
 {
   PolycubePlaneSolver solver;
-  Status status = solver.Build(rest, reference, cells, charts);
+  Status status = solver.Build(rest, reference, cells, charts, seams);
   if (!status)
   {
     return status;
   }
-  const int planeCount = static_cast<int>(charts.PlaneAxis.size());
+  const bool cut = seams && !seams->Empty();
+  const int planeCount = static_cast<int>(solver.ReferencePlanes().size());
   result.PlanesBefore = solver.ReferencePlanes();
   result.FallbackCount = 0;
   result.CarefulPath = false;
@@ -1331,7 +1568,8 @@ Status roundPolycubePlanes(const Points& rest,
 
   // Start from the optimum with the separations (the reference planes when the charts are flat
   // and every separated pair is at least one unit apart).
-  const SeparationGraph separation(charts, result.PlanesBefore, params.SeparationTolerance);
+  const SeparationGraph separation(
+    solver.SeparationPairs(), result.PlanesBefore, params.SeparationTolerance);
   Eigen::VectorXd start = result.PlanesBefore;
   SolveFreePlanes(solver.PlaneHessian(),
     solver.PlaneGradient(),
@@ -1370,7 +1608,7 @@ Status roundPolycubePlanes(const Points& rest,
   const bool fastFailed = !finish(planes);
   result.UnflattenableCharts = fastFailed && params.AcceptInvertedTets &&
     !params.FallbacksWhenUnflattenable && !ChartsCanBeFlat(reference, cells, charts);
-  if (fastFailed && !result.UnflattenableCharts &&
+  if (fastFailed && !result.UnflattenableCharts && !cut &&
     std::chrono::steady_clock::now() < started + budget / 2)
   {
     // The same integers, reached by moving the planes under a barrier (every tet stays
@@ -1449,6 +1687,19 @@ Status roundPolycubePlanes(const Points& rest,
   result.MaxPlaneShift =
     planeCount > 0 ? (result.PlanesAfter - result.PlanesBefore).cwiseAbs().maxCoeff() : 0.0;
   result.Energy = solver.Energy(result.Positions);
+  result.CutTranslations = solver.CutTranslations(planes);
+  const Eigen::VectorXd values = solver.ChartPlaneValues(planes);
+  result.MaxPlaneFraction = 0.0;
+  for (Eigen::Index p = 0; p < values.size(); ++p)
+  {
+    result.MaxPlaneFraction =
+      std::max(result.MaxPlaneFraction, std::fabs(values[p] - std::round(values[p])));
+  }
+  for (const Eigen::Vector3d& t : result.CutTranslations)
+  {
+    result.MaxPlaneFraction =
+      std::max(result.MaxPlaneFraction, (t - t.array().round().matrix()).cwiseAbs().maxCoeff());
+  }
   ReportProgress(progress, 1.0);
   return Status::Success();
 }

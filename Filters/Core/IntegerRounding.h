@@ -28,6 +28,7 @@
 #pragma once
 
 #include "MeshTypes.h"
+#include "PolycubeSeams.h"
 #include "Status.h"
 
 #include <Eigen/Core>
@@ -97,16 +98,37 @@ public:
   ///                   tets
   /// @param cells      #T by 4 tets
   /// @param charts     from ComputeChartPlanes on the same tets
-  /// @return Failure when a tet is not positive in either or when the free coordinates are not
-  ///         pinned by any plane (a component without charts of some axis).
+  /// @param seams      the cuts of a closed-form polycube (nullptr or empty for a uniform one),
+  ///                   translations in the units of `reference`. Then every copy pair stays
+  ///                   related, x_plus = Pi x_minus + t, and the integer variables are the
+  ///                   independent planes followed by the free translations t (a plane that
+  ///                   crosses a cut is one variable, its other side differs by t).
+  /// @return Failure when a tet is not positive in either, when the free coordinates are not
+  ///         pinned by any plane (a component without charts of some axis), or when the
+  ///         transitions contradict the charts.
   Status Build(const Points& rest,
     const Points& reference,
     const Tets& cells,
-    const ChartPlanes& charts);
+    const ChartPlanes& charts,
+    const PolycubeSeams* seams = nullptr);
 
-  /// #P: the mean reference coordinate of the vertices of each plane (where the reference
-  /// polycube puts it; exact when the charts are flat).
+  /// #Z: the reference values of the integer variables: for a uniform polycube the mean
+  /// reference coordinate of the vertices of each plane (exact when the charts are flat); with
+  /// cuts, the least-squares fit of the reference by planes and translations.
   const Eigen::VectorXd& ReferencePlanes() const { return this->RefPlanes; }
+
+  /// Pairs of integer variables that must stay ordered and apart (ChartPlanes::PlanePairs in
+  /// the integer variables; with cuts, only the pairs whose planes are in one frame).
+  const std::vector<std::array<int, 2>>& SeparationPairs() const { return this->Pairs; }
+
+  /// #Z: a chart plane that each integer variable carries, or -1 for a translation.
+  const std::vector<int>& PlaneOfVariable() const { return this->VariablePlane; }
+
+  /// The cut translations t_c for given integer variables (empty without cuts).
+  std::vector<Eigen::Vector3d> CutTranslations(const Eigen::VectorXd& planes) const;
+
+  /// #P: the value of every chart plane (ChartPlanes numbering) for given integer variables.
+  Eigen::VectorXd ChartPlaneValues(const Eigen::VectorXd& planes) const;
 
   /// The energy as a function of the planes alone: E(P) = P^T H P - 2 g^T P + c (the free
   /// coordinates at their optimum). H is #P by #P, symmetric positive semi-definite (a
@@ -146,6 +168,8 @@ private:
   Eigen::VectorXd RefPlanes;
   Eigen::MatrixXd H;
   Eigen::VectorXd G;
+  std::vector<std::array<int, 2>> Pairs;
+  std::vector<int> VariablePlane;
 };
 
 /// Settings of roundPolycubePlanes.
@@ -205,6 +229,10 @@ struct IntegerRoundingResult
   /// tried either.
   bool UnflattenableCharts = false;
   int InvertedTetCount = 0; ///< non-positive tets in Positions (0 unless BestEffort)
+  /// With cuts: the integer translation t_c of each cut, and the largest distance of a chart
+  /// plane from an integer (0 up to round-off).
+  std::vector<Eigen::Vector3d> CutTranslations;
+  double MaxPlaneFraction = 0.0;
 };
 
 /// Rounds every chart plane of `reference` to an integer greedily and re-solves the vertices.
@@ -216,6 +244,9 @@ struct IntegerRoundingResult
 ///                   positive tets
 /// @param cells      #T by 4 tets
 /// @param charts     from ComputeChartPlanes
+/// @param seams      the cuts of a closed-form polycube, translations in lattice units (nullptr
+///                   or empty for a uniform one): the translations are rounded with the planes
+///                   (Fang et al. 2016 §4.3), and the barrier relaxation fallback is not used
 /// @return Failure (naming the chart) when no candidate integer keeps every tet positive and
 ///         every plane pair apart; the message suggests a finer resolution.
 Status roundPolycubePlanes(const Points& rest,
@@ -224,6 +255,7 @@ Status roundPolycubePlanes(const Points& rest,
   const ChartPlanes& charts,
   const IntegerRoundingParameters& params,
   IntegerRoundingResult& result,
-  const Progress& progress = {});
+  const Progress& progress = {},
+  const PolycubeSeams* seams = nullptr);
 
 } // namespace polycubehex
