@@ -10,6 +10,7 @@
 #include "HexScaledJacobian.h"
 #include "HexSmoothing.h"
 #include "IntegerRounding.h"
+#include "PolycubeSeams.h"
 
 #include <Eigen/Geometry>
 
@@ -138,8 +139,23 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     return status;
   }
 
+  // A closed-form polycube is cut open: find its seams and their transitions.
+  PolycubeSeams seams;
+  if (!input.CutRotations.empty() &&
+    !(status = FindPolycubeSeams(input.OriginalVertices,
+        input.PolycubeVertices,
+        cells,
+        input.FaceLabels,
+        input.CutRotations,
+        input.CutTranslations,
+        seams)))
+  {
+    return status;
+  }
+  const bool hasSeams = !seams.Empty();
   ChartPlanes charts;
-  if (!(status = ComputeChartPlanes(input.PolycubeVertices, cells, input.FaceLabels, charts)))
+  if (!(status = ComputeChartPlanes(
+          input.PolycubeVertices, cells, input.FaceLabels, charts, hasSeams ? &seams : nullptr)))
   {
     return status;
   }
@@ -247,13 +263,23 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     result.LatticeScale = targetScale * factors[attempt];
     const Points reference =
       (input.PolycubeVertices.rowwise() - polycubeCentre) * result.LatticeScale;
-    status = roundPolycubePlanes(original,
+    // In the lattice, u = s (x - c): u_plus = Pi u_minus + s (t + Pi c - c).
+    for (int c = 0; c < seams.CutCount(); ++c)
+    {
+      const Eigen::Vector3d centreColumn = polycubeCentre.transpose();
+      seams.Translations[static_cast<size_t>(c)] = result.LatticeScale *
+        (input.CutTranslations[static_cast<size_t>(c)] +
+          seams.Rotations[static_cast<size_t>(c)].cast<double>() * centreColumn - centreColumn);
+    }
+    status = roundPolycubePlanes(
+      original,
       reference,
       cells,
       charts,
       rounding,
       rounded,
-      [&progress](double p) { return ReportProgress(progress, 0.3 * p); });
+      [&progress](double p) { return ReportProgress(progress, 0.3 * p); },
+      hasSeams ? &seams : nullptr);
     result.RoundingAttempts = attempt + 1;
     if (status && rounded.BestEffort && !bestEffort)
     {
@@ -296,6 +322,25 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     return status;
   }
   result.RoundedPolycube = rounded.Positions;
+  if (hasSeams)
+  {
+    // From here on the seams map lattice frames: their translations are the rounded integers.
+    if (rounded.MaxPlaneFraction > 1e-6)
+    {
+      std::ostringstream message;
+      message << "integer rounding left a chart plane or a cut translation "
+              << rounded.MaxPlaneFraction
+              << " off an integer (the transitions fix a plane at a half translation); the hex "
+                 "mesh cannot be stitched across the cuts";
+      return Status::Failure(message.str());
+    }
+    for (int c = 0; c < seams.CutCount(); ++c)
+    {
+      seams.Translations[static_cast<size_t>(c)] =
+        rounded.CutTranslations[static_cast<size_t>(c)].array().round().matrix();
+    }
+    result.IntegerCutTranslations = seams.Translations;
+  }
   result.RoundingFallbackCount = rounded.FallbackCount;
   result.MaxPlaneShift = rounded.MaxPlaneShift;
   result.RoundingMinVolumeRatio = rounded.MinVolumeRatio;

@@ -95,6 +95,9 @@ struct HexExtractionResult
   int PlaneCount = 0;
   int RoundingFallbackCount = 0; ///< planes not rounded to their nearest integer
   int RoundingAttempts = 0;      ///< scales tried (1 when the target scale worked)
+  /// With cuts: the translation t_c of each cut in lattice units, integers (the data contract's
+  /// IntegerCutTranslations).
+  std::vector<Eigen::Vector3d> IntegerCutTranslations;
   /// Tets left inverted by a best-effort rounding (IntegerRoundingParameters::
   /// AcceptInvertedTets), 0 normally.
   int RoundingInvertedTetCount = 0;

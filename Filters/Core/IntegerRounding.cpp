@@ -145,7 +145,8 @@ int ComputeNeighbors(const Tets& cells, Tets& neighbors)
 Status ComputeChartPlanes(const Points& positions,
   const Tets& cells,
   const Tets& faceLabels,
-  ChartPlanes& charts)
+  ChartPlanes& charts,
+  const PolycubeSeams* seams)
 {
   const int vertexCount = static_cast<int>(positions.rows());
   const int tetCount = static_cast<int>(cells.rows());
@@ -178,6 +179,15 @@ Status ComputeChartPlanes(const Points& positions,
       {
         return Status::Failure("tet " + std::to_string(t) + " has the polycube label " +
           std::to_string(label) + " on face " + std::to_string(k) + " (valid: -1, 0..5)");
+      }
+      const bool seam = seams && seams->Neighbor.rows() == tetCount && seams->Neighbor(t, k) >= 0;
+      if (seam && label >= 0)
+      {
+        ++interiorLabelled; // a cut face is inside M
+      }
+      if (seam)
+      {
+        continue;
       }
       const bool boundary = charts.Neighbors(t, k) < 0;
       if (boundary && label < 0)

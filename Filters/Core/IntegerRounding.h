@@ -75,12 +75,18 @@ struct ChartPlanes
 /// @param cells       #T by 4 tets
 /// @param faceLabels  #T by 4: label 0..5 of local face k when it lies on the boundary, -1
 ///                    otherwise (PolycubeLabels in the data contract)
-/// @return Failure when a boundary face has no label, an interior face has one, a label is out
-///         of range, an index is out of range, or a face is shared by more than two tets.
+/// @param seams       the cuts of a closed-form polycube (nullptr for a uniform one): their faces
+///                    are boundary faces of the cut mesh but lie inside M, so they carry no
+///                    label and belong to no chart (Neighbors stays -1 there: the tet across is
+///                    in seams->Neighbor)
+/// @return Failure when a boundary face has no label, an interior face (or a cut face) has one,
+///         a label is out of range, an index is out of range, or a face is shared by more than
+///         two tets.
 Status ComputeChartPlanes(const Points& positions,
   const Tets& cells,
   const Tets& faceLabels,
-  ChartPlanes& charts);
+  ChartPlanes& charts,
+  const PolycubeSeams* seams = nullptr);
 
 /// The distortion energy of a polycube with its chart planes as hard equalities, reduced to the
 /// plane values. Build it once per reference; Solve maps plane values to vertex positions.

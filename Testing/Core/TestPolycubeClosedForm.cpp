@@ -4,9 +4,7 @@
 // with x_plus = Pi x_minus + t hard. A torus and a square ring twisted by a quarter turn (the
 // paper's Figure 14) both become polycubes with no corner, which no uncut polycube can be (at
 // least 16 on a torus).
-#include "FrameField.h"
-#include "HandleCuts.h"
-#include "PolycubeDeformation.h"
+#include "ClosedFormStages.h"
 #include "TestAssert.h"
 #include "TestMeshGenerators.h"
 #include "TetGeometry.h"
@@ -16,67 +14,10 @@
 #include <iostream>
 
 using namespace polycubehex;
+using polycubehex_test::ClosedForm;
 
 namespace
 {
-/// Runs the three stages; returns false (with a message) when one refuses.
-bool ClosedForm(const char* name, const TetMesh& mesh, PolycubeCuts& cuts, PolycubeResult& out)
-{
-  HandleCutResult handles;
-  Status status = ComputeHandleCuts(mesh, HandleCutParameters(), handles);
-  if (!status)
-  {
-    std::cout << name << ": cuts refused: " << status.Message() << "\n";
-    return false;
-  }
-  CutFaces cutFaces;
-  cutFaces.Ids = handles.CutFaces;
-  cutFaces.Sides = handles.CutSide;
-  FrameFieldResult field;
-  status = ComputeFrameField(mesh, cutFaces, FrameFieldParameters(), field);
-  if (!status)
-  {
-    std::cout << name << ": frame field refused: " << status.Message() << "\n";
-    return false;
-  }
-  std::vector<Eigen::Matrix3d> frames(static_cast<size_t>(mesh.Cells.rows()));
-  for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
-  {
-    for (int a = 0; a < 9; ++a)
-    {
-      frames[static_cast<size_t>(t)](a / 3, a % 3) = field.Frames(t, a);
-    }
-  }
-  cuts.FaceCut = handles.CutFaces;
-  cuts.FaceSide = handles.CutSide;
-  cuts.Transitions.clear();
-  for (Eigen::Index c = 0; c < field.CutTransitions.rows(); ++c)
-  {
-    Eigen::Matrix3i pi;
-    for (int a = 0; a < 9; ++a)
-    {
-      pi(a / 3, a % 3) = field.CutTransitions(c, a);
-    }
-    cuts.Transitions.push_back(pi);
-  }
-  status = ComputePolycube(mesh, PolycubeParameters(), out, {}, frames, &cuts);
-  if (!status)
-  {
-    std::cout << name << ": polycube refused: " << status.Message() << "\n";
-    return false;
-  }
-  std::cout << name << ": " << mesh.Cells.rows() << " tets, " << cuts.Count() << " cut(s), "
-            << out.CornerCount << " corners, " << out.ChartCount << " charts, residual "
-            << out.Residual << ", plane deviation " << out.MaxPlaneDeviation << ", "
-            << out.InvertedTetCount << " inverted, min volume ratio " << out.MinVolumeRatio
-            << ", t = " << out.CutTranslations << "\n";
-  for (const std::string& warning : out.Warnings)
-  {
-    std::cout << "  warning: " << warning << "\n";
-  }
-  return true;
-}
-
 /// The properties every closed-form polycube must have.
 void CheckPolycube(const TetMesh& mesh, const PolycubeCuts& cuts, const PolycubeResult& out)
 {
@@ -152,18 +93,7 @@ int main(int, char*[])
   // quarter turn about the ring's direction; the four sides are one face that runs four times
   // around, so the polycube is again a bar without corners, its ends glued by a quarter turn.
   {
-    std::vector<int> quarter;
-    const polycubehex_test::Planar square = polycubehex_test::MakeSquare(4, quarter);
-    const int layers = 40;
-    auto place = [layers](int l, const Eigen::Vector2d& p)
-    {
-      const double theta = 2.0 * polycubehex_test::Pi * l / layers;
-      const double twist = 0.5 * polycubehex_test::Pi * l / layers;
-      const Eigen::Vector2d s = Eigen::Rotation2Dd(twist) * p;
-      const double rho = 2.5 + 0.6 * s(0);
-      return Eigen::Vector3d(rho * std::cos(theta), rho * std::sin(theta), 0.6 * s(1));
-    };
-    const TetMesh mesh = polycubehex_test::Sweep(square, layers, true, quarter, place);
+    const TetMesh mesh = polycubehex_test::TwistedSquareRing();
     PolycubeCuts cuts;
     PolycubeResult out;
     PCH_CHECK(ClosedForm("twisted square ring", mesh, cuts, out));
