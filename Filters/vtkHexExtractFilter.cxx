@@ -21,8 +21,11 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <sstream>
+#include <vector>
 
 vtkStandardNewMacro(vtkHexExtractFilter);
 
@@ -77,12 +80,82 @@ bool ToPolycubeTetMesh(vtkUnstructuredGrid* input,
   return true;
 }
 
-/// The input tets at their original positions: the reference surface for distances.
+/// Reads the cuts of a closed-form polycube (field CutTransitions and CutTranslations); none
+/// for a uniform one.
+bool ReadCuts(vtkUnstructuredGrid* input, polycubehex::PolycubeTetMesh& mesh, std::string& why)
+{
+  vtkDataArray* translations = input->GetFieldData()->GetArray(names::CutTranslations);
+  if (!translations || translations->GetNumberOfTuples() == 0)
+  {
+    return true;
+  }
+  vtkDataArray* transitions = input->GetFieldData()->GetArray(names::CutTransitions);
+  if (translations->GetNumberOfComponents() != 3 || !transitions ||
+    transitions->GetNumberOfComponents() != 9 ||
+    transitions->GetNumberOfTuples() != translations->GetNumberOfTuples())
+  {
+    why = std::string("the polycube is cut open (field '") + names::CutTranslations +
+      "') but its field '" + names::CutTransitions +
+      "' is missing or does not hold one 9-component rotation per cut";
+    return false;
+  }
+  for (vtkIdType c = 0; c < translations->GetNumberOfTuples(); ++c)
+  {
+    Eigen::Matrix3i rotation;
+    Eigen::Vector3d translation;
+    for (int a = 0; a < 9; ++a)
+    {
+      rotation(a / 3, a % 3) = static_cast<int>(std::lround(transitions->GetComponent(c, a)));
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      translation[a] = translations->GetComponent(c, a);
+    }
+    if (rotation.cast<double>().determinant() != 1.0 ||
+      (rotation.transpose() * rotation) != Eigen::Matrix3i::Identity())
+    {
+      why = "cut " + std::to_string(c) + " has a transition that is not a cube rotation";
+      return false;
+    }
+    mesh.CutRotations.push_back(rotation);
+    mesh.CutTranslations.push_back(translation);
+  }
+  return true;
+}
+
+/// The input tets at their original positions: the reference surface for distances. The copies
+/// of a cut polycube's points are merged, so that the cut faces are inside again.
 vtkSmartPointer<vtkUnstructuredGrid> OriginalTets(const polycubehex::PolycubeTetMesh& mesh)
 {
+  std::map<std::array<double, 3>, int> merged;
+  std::vector<int> index(static_cast<size_t>(mesh.OriginalVertices.rows()));
+  std::vector<Eigen::RowVector3d> points;
+  for (Eigen::Index v = 0; v < mesh.OriginalVertices.rows(); ++v)
+  {
+    const std::array<double, 3> key = { mesh.OriginalVertices(v, 0),
+      mesh.OriginalVertices(v, 1),
+      mesh.OriginalVertices(v, 2) };
+    const auto found = merged.emplace(key, static_cast<int>(points.size()));
+    if (found.second)
+    {
+      points.push_back(mesh.OriginalVertices.row(v));
+    }
+    index[static_cast<size_t>(v)] = found.first->second;
+  }
   polycubehex::TetMesh tets;
-  tets.Vertices = mesh.OriginalVertices;
+  tets.Vertices.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t p = 0; p < points.size(); ++p)
+  {
+    tets.Vertices.row(static_cast<Eigen::Index>(p)) = points[p];
+  }
   tets.Cells = mesh.Cells;
+  for (Eigen::Index t = 0; t < tets.Cells.rows(); ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      tets.Cells(t, k) = index[static_cast<size_t>(tets.Cells(t, k))];
+    }
+  }
   return polycubehex::ToUnstructuredGrid(tets);
 }
 
@@ -114,21 +187,10 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   vtkUnstructuredGrid* hexOutput = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkPolyData* quadOutput = vtkPolyData::GetData(outputVector, 1);
 
-  // 2. Check and convert it. A closed-form polycube (cut open, with a translation per cut)
-  // needs the extraction stitched across its cuts, which is not built yet.
-  vtkDataArray* translations =
-    input ? input->GetFieldData()->GetArray(names::CutTranslations) : nullptr;
-  if (translations && translations->GetNumberOfTuples() > 0)
-  {
-    vtkErrorMacro(<< "Cannot extract hexes: the polycube is cut open along "
-                  << translations->GetNumberOfTuples()
-                  << " cut(s) (FrameField guidance on a model with handles), and hex extraction "
-                     "is not yet stitched across cuts. Use Guidance Uniform for this model.");
-    return 0;
-  }
+  // 2. Check and convert it; a closed-form polycube also brings its cuts.
   polycubehex::PolycubeTetMesh mesh;
   std::string why;
-  if (!ToPolycubeTetMesh(input, mesh, why))
+  if (!ToPolycubeTetMesh(input, mesh, why) || !ReadCuts(input, mesh, why))
   {
     vtkErrorMacro(<< "Cannot extract hexes: " << why);
     return 0;
@@ -184,6 +246,25 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   }
   polycubehex::SetFieldValue<vtkIntArray>(fields, "PaddingHexCount", result.PaddingHexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "LatticeScale", result.LatticeScale);
+  if (!result.IntegerCutTranslations.empty())
+  {
+    // Each cut's translation in hex edges: the seam's lattice shift (data contract).
+    vtkNew<vtkIntArray> integerTranslations;
+    integerTranslations->SetName(names::IntegerCutTranslations);
+    integerTranslations->SetNumberOfComponents(3);
+    integerTranslations->SetNumberOfTuples(
+      static_cast<vtkIdType>(result.IntegerCutTranslations.size()));
+    for (size_t c = 0; c < result.IntegerCutTranslations.size(); ++c)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        integerTranslations->SetComponent(static_cast<vtkIdType>(c),
+          a,
+          std::round(result.IntegerCutTranslations[c][a]));
+      }
+    }
+    fields->AddArray(integerTranslations);
+  }
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RoundingInvertedTetCount", result.RoundingInvertedTetCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(
