@@ -4,6 +4,7 @@
 #include "MemoryBudget.h"
 
 #include "HexLatticeExtraction.h"
+#include "HexLatticePadding.h"
 #include "HexMeshValidity.h"
 #include "HexPadding.h"
 #include "HexResolution.h"
@@ -346,7 +347,12 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   result.RoundingMinVolumeRatio = rounded.MinVolumeRatio;
   result.RoundingSeconds = Seconds(start);
 
-  // 3. Lattice cubes.
+  // TODO(lead): set from FindPolycubeSeams and the rounding's integer translations (lattice
+  // units) in steps 1-2; nullptr keeps the uniform path.
+  const PolycubeSeams* seams = nullptr;
+
+  // 3. Lattice cubes, seamless across the cuts (a vertex or cube on a seam is found from both
+  //    sides and kept once).
   start = std::chrono::steady_clock::now();
   LatticeHexMesh lattice;
   status = extractLatticeHexes(original,
@@ -355,7 +361,8 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     charts,
     LatticeExtractionParameters(),
     lattice,
-    [&progress](double p) { return ReportProgress(progress, 0.3 + 0.3 * p); });
+    [&progress](double p) { return ReportProgress(progress, 0.3 + 0.3 * p); },
+    seams);
   if (!status)
   {
     return status;
@@ -365,98 +372,44 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     return Status::Failure("no hex fits in the polycube at this resolution; raise "
                            "TargetHexCount or lower TargetEdgeLength");
   }
+  if (lattice.InconsistentSeamCount > 0)
+  {
+    result.Warnings.push_back(std::to_string(lattice.InconsistentSeamCount) +
+      " lattice points on the cuts did not match across them; the hex mesh may have seams");
+  }
   result.ExtractionSeconds = Seconds(start);
 
-  HexMesh mesh = std::move(lattice.Mesh);
-  std::vector<std::vector<int>> vertexCharts = std::move(lattice.VertexCharts);
-  result.LatticeVertices = lattice.LatticeVertices;
-
-  // 4. Padding layer.
+  // 4. Padding layer. The inner copy of a boundary vertex moves PaddingThickness hexes inwards
+  //    along each of its charts' normals, in the lattice, and is mapped through the tets around
+  //    the vertex (HexLatticePadding.h).
   start = std::chrono::steady_clock::now();
   if (params.Padding)
   {
-    // The inner copy of a boundary vertex moves PaddingThickness hexes inwards along each of
-    // its charts' normals, in the lattice, and is mapped through the tets around the vertex:
-    // so the layer follows the map, and at a concave polycube edge the copy moves along the
-    // bisector as far as its neighbours on either chart.
-    const int oldCount = static_cast<int>(result.LatticeVertices.rows());
-    Points directions = Points::Zero(oldCount, 3);
-    for (int v = 0; v < oldCount; ++v)
-    {
-      bool seen[6] = { false, false, false, false, false, false };
-      for (int chart : vertexCharts[v])
-      {
-        const int label = charts.ChartLabel[chart];
-        if (!seen[label])
-        {
-          seen[label] = true;
-          directions(v, label / 2) += label % 2 == 0 ? -1.0 : 1.0;
-        }
-      }
-    }
-    HexMesh latticeMesh;
-    latticeMesh.Vertices = result.LatticeVertices;
-    latticeMesh.Cells = mesh.Cells;
-    const Points offsets = ComputePaddingOffsets(latticeMesh, directions, params.PaddingThickness);
-    std::vector<Eigen::RowVector3d> copyLattice(oldCount);
-    int unmapped = 0;
-    auto innerPosition = [&](int v) -> Eigen::RowVector3d
-    {
-      const Eigen::Vector3d from = result.LatticeVertices.row(v).transpose();
-      const Eigen::Vector3d to = from + offsets.row(v).transpose();
-      copyLattice[v] = to.transpose();
-      Eigen::RowVector3d image;
-      if (MapLatticePoint(original,
+    LatticePaddingResult padding;
+    if (!(status = addLatticePaddingLayer(original,
             rounded.Positions,
             cells,
             charts,
-            lattice.VertexTets[v],
-            from,
-            to,
-            1e-9,
-            image))
-      {
-        return image;
-      }
-      // Off the volume (a boundary vertex without charts): the mean of its hexes' centres.
-      ++unmapped;
-      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-      int count = 0;
-      for (int h = 0; h < lattice.HexCenters.rows(); ++h)
-      {
-        for (int k = 0; k < 8; ++k)
-        {
-          if (mesh.Cells(h, k) == v)
-          {
-            mean += lattice.HexCenters.row(h);
-            ++count;
-          }
-        }
-      }
-      copyLattice[v] = from.transpose();
-      return mesh.Vertices.row(v) +
-        2.0 * params.PaddingThickness * (mean / std::max(1, count) - mesh.Vertices.row(v));
-    };
-    HexPaddingResult padding;
-    if (!(status = addPaddingLayer(mesh, innerPosition, padding)))
+            params.PaddingThickness,
+            lattice,
+            padding,
+            seams)))
     {
       return status;
     }
-    result.PaddingHexCount = static_cast<int>(padding.BoundaryQuads.rows());
-    result.UnmappedPaddingVertexCount = unmapped;
-    Points latticeVertices(mesh.Vertices.rows(), 3);
-    latticeVertices.topRows(oldCount) = result.LatticeVertices;
-    for (int v = 0; v < oldCount; ++v)
-    {
-      if (padding.InnerCopy[v] >= 0)
-      {
-        latticeVertices.row(padding.InnerCopy[v]) = copyLattice[v];
-      }
-    }
-    result.LatticeVertices = std::move(latticeVertices);
-    vertexCharts.resize(mesh.Vertices.rows());
+    result.PaddingHexCount = padding.PaddingHexCount;
+    result.UnmappedPaddingVertexCount = padding.UnmappedVertexCount;
   }
   result.PaddingSeconds = Seconds(start);
+  HexMesh mesh = std::move(lattice.Mesh);
+  result.LatticeVertices = std::move(lattice.LatticeVertices);
+  // Charts of M: across a seam, the charts of M_c that continue each other are one (a vertex on
+  // a seam sees one chart, not a feature curve; GluedVertexCharts). Each is numbered by one of
+  // its M_c charts, so ChartLabel still applies (in that chart's frame).
+  const std::vector<int> gluedChart = GlueChartsAcrossSeams(cells, charts, seams);
+  std::vector<std::vector<int>> vertexCharts = seams && !seams->Empty()
+    ? GluedVertexCharts(lattice, gluedChart)
+    : std::move(lattice.VertexCharts);
 
   // 5. Smoothing, boundary vertices held on the input surface.
   start = std::chrono::steady_clock::now();
@@ -465,29 +418,12 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   result.ScaledJacobianMeanBeforeSmoothing = rawQuality.mean();
   if (params.Smoothing && params.SmoothingIterations > 0)
   {
-    HexSmoothingSurface surface;
-    surface.Vertices = original;
-    std::vector<std::array<int, 3>> faces;
-    for (int t = 0; t < cells.rows(); ++t)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        if (charts.FaceChart(t, k) >= 0)
-        {
-          faces.push_back(
-            { cells(t, FaceTable[k][0]), cells(t, FaceTable[k][1]), cells(t, FaceTable[k][2]) });
-          surface.FaceChart.push_back(charts.FaceChart(t, k));
-        }
-      }
-    }
-    surface.Faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
-    for (size_t f = 0; f < faces.size(); ++f)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        surface.Faces(static_cast<Eigen::Index>(f), c) = faces[f][c];
-      }
-    }
+    const bool cut = seams && !seams->Empty();
+    const HexSmoothingSurface surface = MakeChartSurface(original,
+      cells,
+      charts.FaceChart,
+      cut ? gluedChart : std::vector<int>(),
+      cut ? SeamVertexIdentity(static_cast<int>(original.rows()), seams) : std::vector<int>());
     HexSmoothingParameters smoothing;
     smoothing.Iterations = params.SmoothingIterations;
     HexSmoothingResult smoothed;

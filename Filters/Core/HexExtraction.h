@@ -4,12 +4,12 @@
 // the unit cubes of the lattice per tet and map them back (HexLatticeExtraction.h), then
 // optionally add a padding layer (HexPadding.h) and smooth (HexSmoothing.h).
 //
-// Today the input is a uniform polycube (no cuts): every vertex has one polycube position. The
-// cut transition u_plus = Pi u_minus + t enters later in three places, each designed for it:
-// the rounding (t as integer variables, plus-side coordinates eliminated), the extraction (the
-// walk from a cube's centre to its corners applies the transition on crossing a cut face) and the
-// deduplication (vertices are keyed by coordinate and connected tet region, never by a global
-// hash of lattice coordinates).
+// The cut transition u_plus = Pi u_minus + t of a closed-form polycube enters in three places:
+// the rounding (t as integer variables, plus-side coordinates eliminated), the extraction (points
+// and cube centres on a cut face found from both sides are united, and the walk from a cube's
+// centre to its corners applies the transition on crossing a cut face; HexLatticeExtraction.h),
+// and the padding and smoothing (offsets per vertex frame seen from each hex through a rotation,
+// charts glued across the seams; HexLatticePadding.h, GlueChartsAcrossSeams).
 #pragma once
 
 #include "MeshTypes.h"

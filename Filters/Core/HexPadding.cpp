@@ -17,9 +17,9 @@ constexpr int Faces[6][4] = { { 0, 4, 7, 3 },
   { 3, 7, 6, 2 },
   { 0, 3, 2, 1 },
   { 4, 5, 6, 7 } };
-} // namespace
 
-Quads ComputeHexBoundaryQuads(const HexMesh& mesh)
+/// The boundary quads and, optionally, the (hex, local face) each comes from.
+Quads BoundaryQuadsOf(const HexMesh& mesh, std::vector<std::array<int, 2>>* faces)
 {
   struct Use
   {
@@ -73,10 +73,20 @@ Quads ComputeHexBoundaryQuads(const HexMesh& mesh)
       {
         quads(q, k) = mesh.Cells(uses[i].Hex, Faces[uses[i].Face][k]);
       }
+      if (faces)
+      {
+        faces->push_back({ uses[i].Hex, uses[i].Face });
+      }
       ++q;
     }
   }
   return quads;
+}
+} // namespace
+
+Quads ComputeHexBoundaryQuads(const HexMesh& mesh)
+{
+  return BoundaryQuadsOf(mesh, nullptr);
 }
 
 Points ComputePaddingOffsets(const HexMesh& mesh,
@@ -84,9 +94,40 @@ Points ComputePaddingOffsets(const HexMesh& mesh,
   double thickness,
   double minQuality)
 {
-  const int vertexCount = static_cast<int>(mesh.Vertices.rows());
-  const int hexCount = static_cast<int>(mesh.Cells.rows());
-  const Quads quads = ComputeHexBoundaryQuads(mesh);
+  Points hexCorners(8 * mesh.Cells.rows(), 3);
+  for (Eigen::Index h = 0; h < mesh.Cells.rows(); ++h)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      hexCorners.row(8 * h + k) = mesh.Vertices.row(mesh.Cells(h, k));
+    }
+  }
+  Points offsets =
+    ComputePaddingOffsets(mesh.Cells, hexCorners, {}, directions, thickness, minQuality);
+  if (offsets.rows() != mesh.Vertices.rows())
+  {
+    Points sized = Points::Zero(mesh.Vertices.rows(), 3);
+    const Eigen::Index rows = std::min(offsets.rows(), sized.rows());
+    sized.topRows(rows) = offsets.topRows(rows);
+    offsets = std::move(sized);
+  }
+  return offsets;
+}
+
+Points ComputePaddingOffsets(const Hexes& cells,
+  const Points& hexCorners,
+  const std::vector<Eigen::Matrix3i>& cornerRotations,
+  const Points& directions,
+  double thickness,
+  double minQuality)
+{
+  const int vertexCount = static_cast<int>(
+    std::max<Eigen::Index>(directions.rows(), cells.rows() > 0 ? cells.maxCoeff() + 1 : 0));
+  const int hexCount = static_cast<int>(cells.rows());
+  HexMesh topology;
+  topology.Cells = cells;
+  std::vector<std::array<int, 2>> quadFaces; // (hex, local face) of each boundary quad
+  const Quads quads = BoundaryQuadsOf(topology, &quadFaces);
   std::vector<bool> boundary(vertexCount, false);
   for (int q = 0; q < quads.rows(); ++q)
   {
@@ -96,25 +137,32 @@ Points ComputePaddingOffsets(const HexMesh& mesh,
     }
   }
   Points offsets = Points::Zero(vertexCount, 3);
-  for (int v = 0; v < vertexCount; ++v)
+  for (int v = 0; v < vertexCount && v < directions.rows(); ++v)
   {
     if (boundary[v])
     {
       offsets.row(v) = thickness * directions.row(v);
     }
   }
-  // Every hex after padding, as 8 (vertex, uses the copy) pairs: the kept hexes use the copies
-  // of their boundary vertices, a padding hex its quad's vertices and their copies.
-  std::vector<std::array<std::pair<int, bool>, 8>> hexes;
+  // Every hex after padding, as 8 (hex, corner of that hex, uses the copy) triples: the kept
+  // hexes use the copies of their boundary vertices, a padding hex its quad's vertices and
+  // their copies, seen from the hex the quad bounds.
+  struct Corner
+  {
+    int Hex;
+    int Local;
+    bool Copy;
+  };
+  std::vector<std::array<Corner, 8>> hexes;
   hexes.reserve(hexCount + quads.rows());
   for (int h = 0; h < hexCount; ++h)
   {
-    std::array<std::pair<int, bool>, 8> hex;
+    std::array<Corner, 8> hex;
     bool touches = false;
     for (int k = 0; k < 8; ++k)
     {
-      hex[k] = { mesh.Cells(h, k), boundary[mesh.Cells(h, k)] };
-      touches = touches || hex[k].second;
+      hex[k] = { h, k, static_cast<bool>(boundary[cells(h, k)]) };
+      touches = touches || hex[k].Copy;
     }
     if (touches)
     {
@@ -124,11 +172,13 @@ Points ComputePaddingOffsets(const HexMesh& mesh,
   for (int q = 0; q < quads.rows(); ++q)
   {
     const int order[4] = { 0, 3, 2, 1 };
-    std::array<std::pair<int, bool>, 8> hex;
+    const int h = quadFaces[q][0];
+    std::array<Corner, 8> hex;
     for (int k = 0; k < 4; ++k)
     {
-      hex[k] = { quads(q, order[k]), false };
-      hex[4 + k] = { quads(q, order[k]), true };
+      const int local = Faces[quadFaces[q][1]][order[k]];
+      hex[k] = { h, local, false };
+      hex[4 + k] = { h, local, true };
     }
     hexes.push_back(hex);
   }
@@ -141,19 +191,30 @@ Points ComputePaddingOffsets(const HexMesh& mesh,
       Eigen::Matrix<double, 8, 3> corners;
       for (int k = 0; k < 8; ++k)
       {
-        corners.row(k) = mesh.Vertices.row(hex[k].first);
-        if (hex[k].second)
+        const Corner& corner = hex[k];
+        const size_t row = 8 * static_cast<size_t>(corner.Hex) + corner.Local;
+        corners.row(k) = hexCorners.row(static_cast<Eigen::Index>(row));
+        if (corner.Copy)
         {
-          corners.row(k) += offsets.row(hex[k].first);
+          const int v = cells(corner.Hex, corner.Local);
+          if (cornerRotations.empty())
+          {
+            corners.row(k) += offsets.row(v);
+          }
+          else
+          {
+            corners.row(k) +=
+              (cornerRotations[row].cast<double>() * offsets.row(v).transpose()).transpose();
+          }
         }
       }
       if (HexScaledJacobian(corners) < minQuality)
       {
         for (int k = 0; k < 8; ++k)
         {
-          if (hex[k].second)
+          if (hex[k].Copy)
           {
-            shrink[hex[k].first] = true;
+            shrink[cells(hex[k].Hex, hex[k].Local)] = true;
             any = true;
           }
         }

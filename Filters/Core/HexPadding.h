@@ -38,6 +38,25 @@ Points ComputePaddingOffsets(const HexMesh& mesh,
   double thickness,
   double minQuality = 0.3);
 
+/// The same where the hexes' corners are not in one frame (a cut polycube: each side of a seam
+/// has its lattice frame). Each hex's corners are given in its own frame, and the offset of
+/// vertex v (in v's frame, like its direction) is seen from hex h as R_hk offset_v, R_hk the
+/// rotation from the frame of vertex Cells(h, k) to the frame of hex h.
+/// @param cells            #H by 8 hexes in VTK order (#V = the largest index + 1, or the rows
+///                         of `directions`)
+/// @param hexCorners       #H * 8 by 3: row 8 h + k the lattice coordinates of corner k of hex h
+///                         in the hex's frame
+/// @param cornerRotations  #H * 8 rotations R_hk (LatticeHexMesh::HexCornerRotations), or
+///                         empty when every one is the identity
+/// @param directions       #V by 3 inward direction of each boundary vertex, in its own frame
+/// @return #V by 3 offsets, each in its vertex's frame (zero rows for interior vertices)
+Points ComputePaddingOffsets(const Hexes& cells,
+  const Points& hexCorners,
+  const std::vector<Eigen::Matrix3i>& cornerRotations,
+  const Points& directions,
+  double thickness,
+  double minQuality = 0.3);
+
 /// What addPaddingLayer did.
 struct HexPaddingResult
 {

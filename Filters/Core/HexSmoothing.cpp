@@ -201,6 +201,46 @@ double MeanOf(const Eigen::VectorXd& values)
 }
 } // namespace
 
+HexSmoothingSurface MakeChartSurface(const Points& vertices,
+  const Tets& cells,
+  const Tets& faceChart,
+  const std::vector<int>& chartIds,
+  const std::vector<int>& identity)
+{
+  constexpr int FaceTable[4][3] = { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 2, 1 } };
+  HexSmoothingSurface surface;
+  surface.Vertices = vertices;
+  std::vector<std::array<int, 3>> faces;
+  for (int t = 0; t < cells.rows(); ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int chart = faceChart(t, k);
+      if (chart < 0)
+      {
+        continue;
+      }
+      std::array<int, 3> face;
+      for (int i = 0; i < 3; ++i)
+      {
+        const int v = cells(t, FaceTable[k][i]);
+        face[i] = identity.empty() ? v : identity[static_cast<size_t>(v)];
+      }
+      faces.push_back(face);
+      surface.FaceChart.push_back(chartIds.empty() ? chart : chartIds[static_cast<size_t>(chart)]);
+    }
+  }
+  surface.Faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      surface.Faces(static_cast<Eigen::Index>(f), c) = faces[f][c];
+    }
+  }
+  return surface;
+}
+
 Status smoothHexMesh(HexMesh& mesh,
   const std::vector<std::vector<int>>& vertexCharts,
   const HexSmoothingSurface& surface,

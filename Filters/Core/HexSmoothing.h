@@ -24,6 +24,21 @@ struct HexSmoothingSurface
   std::vector<int> FaceChart; ///< #F chart of each triangle
 };
 
+/// The boundary triangles of a tet mesh with their charts, for smoothHexMesh.
+/// @param vertices   #V by 3 positions of the surface (the input's)
+/// @param cells      #T by 4 tets
+/// @param faceChart  #T by 4 chart of local face k (vtkTetra order) or -1 (ChartPlanes::FaceChart)
+/// @param chartIds   #C: the number each chart gets in the surface (its glued chart across the
+///                   seams of a cut polycube, GlueChartsAcrossSeams), or empty for the charts'
+///                   own numbers
+/// @param identity   #V: the vertex each one stands for (the copies across a seam as one,
+///                   SeamVertexIdentity, so that feature curves continue across it), or empty
+HexSmoothingSurface MakeChartSurface(const Points& vertices,
+  const Tets& cells,
+  const Tets& faceChart,
+  const std::vector<int>& chartIds = {},
+  const std::vector<int>& identity = {});
+
 /// Settings of smoothHexMesh.
 struct HexSmoothingParameters
 {
