@@ -141,7 +141,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   }
 
   // A closed-form polycube is cut open: find its seams and their transitions.
-  PolycubeSeams seams;
+  PolycubeSeams cutSeams;
   if (!input.CutRotations.empty() &&
     !(status = FindPolycubeSeams(input.OriginalVertices,
         input.PolycubeVertices,
@@ -149,14 +149,14 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         input.FaceLabels,
         input.CutRotations,
         input.CutTranslations,
-        seams)))
+        cutSeams)))
   {
     return status;
   }
-  const bool hasSeams = !seams.Empty();
+  const bool hasSeams = !cutSeams.Empty();
   ChartPlanes charts;
   if (!(status = ComputeChartPlanes(
-          input.PolycubeVertices, cells, input.FaceLabels, charts, hasSeams ? &seams : nullptr)))
+          input.PolycubeVertices, cells, input.FaceLabels, charts, hasSeams ? &cutSeams : nullptr)))
   {
     return status;
   }
@@ -265,12 +265,12 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     const Points reference =
       (input.PolycubeVertices.rowwise() - polycubeCentre) * result.LatticeScale;
     // In the lattice, u = s (x - c): u_plus = Pi u_minus + s (t + Pi c - c).
-    for (int c = 0; c < seams.CutCount(); ++c)
+    for (int c = 0; c < cutSeams.CutCount(); ++c)
     {
       const Eigen::Vector3d centreColumn = polycubeCentre.transpose();
-      seams.Translations[static_cast<size_t>(c)] = result.LatticeScale *
+      cutSeams.Translations[static_cast<size_t>(c)] = result.LatticeScale *
         (input.CutTranslations[static_cast<size_t>(c)] +
-          seams.Rotations[static_cast<size_t>(c)].cast<double>() * centreColumn - centreColumn);
+          cutSeams.Rotations[static_cast<size_t>(c)].cast<double>() * centreColumn - centreColumn);
     }
     status = roundPolycubePlanes(
       original,
@@ -280,7 +280,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       rounding,
       rounded,
       [&progress](double p) { return ReportProgress(progress, 0.3 * p); },
-      hasSeams ? &seams : nullptr);
+      hasSeams ? &cutSeams : nullptr);
     result.RoundingAttempts = attempt + 1;
     if (status && rounded.BestEffort && !bestEffort)
     {
@@ -325,7 +325,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   result.RoundedPolycube = rounded.Positions;
   if (hasSeams)
   {
-    // From here on the seams map lattice frames: their translations are the rounded integers.
+    // From here on the cutSeams map lattice frames: their translations are the rounded integers.
     if (rounded.MaxPlaneFraction > 1e-6)
     {
       std::ostringstream message;
@@ -335,21 +335,20 @@ Status extractHexMesh(const PolycubeTetMesh& input,
                  "mesh cannot be stitched across the cuts";
       return Status::Failure(message.str());
     }
-    for (int c = 0; c < seams.CutCount(); ++c)
+    for (int c = 0; c < cutSeams.CutCount(); ++c)
     {
-      seams.Translations[static_cast<size_t>(c)] =
+      cutSeams.Translations[static_cast<size_t>(c)] =
         rounded.CutTranslations[static_cast<size_t>(c)].array().round().matrix();
     }
-    result.IntegerCutTranslations = seams.Translations;
+    result.IntegerCutTranslations = cutSeams.Translations;
   }
   result.RoundingFallbackCount = rounded.FallbackCount;
   result.MaxPlaneShift = rounded.MaxPlaneShift;
   result.RoundingMinVolumeRatio = rounded.MinVolumeRatio;
   result.RoundingSeconds = Seconds(start);
 
-  // TODO(lead): set from FindPolycubeSeams and the rounding's integer translations (lattice
-  // units) in steps 1-2; nullptr keeps the uniform path.
-  const PolycubeSeams* seams = nullptr;
+  // The seams in lattice frames (integer translations), or none for a uniform polycube.
+  const PolycubeSeams* seams = hasSeams ? &cutSeams : nullptr;
 
   // 3. Lattice cubes, seamless across the cuts (a vertex or cube on a seam is found from both
   //    sides and kept once).

@@ -110,17 +110,44 @@ int main(int, char*[])
       continue;
     }
     const PolycubeTetMesh input = ToHexInput(cuts, polycube);
-    HexExtractionParameters params;
-    params.TargetHexCount = 400;
-    params.Padding = false;
-    params.Smoothing = false;
-    HexExtractionResult result;
-    const Status status = extractHexMesh(input, params, result);
-    std::cout << c.Name << ": " << (status ? "extracted" : status.Message()) << "\n";
-    PCH_CHECK(status.Ok());
-    if (status)
+    // Raw lattice hexes, then the default finish (padding layer and smoothing).
+    for (const bool finish : { false, true })
     {
+      HexExtractionParameters params;
+      params.TargetHexCount = 3000;
+      params.Padding = finish;
+      params.Smoothing = finish;
+      HexExtractionResult result;
+      const Status status = extractHexMesh(input, params, result);
+      PCH_CHECK(status.Ok());
+      if (!status)
+      {
+        std::cout << c.Name << ": " << status.Message() << "\n";
+        continue;
+      }
       CheckSeamlessRounding(c.Name, input, result);
+      // Seamless: a closed manifold boundary with every quad interior to two hexes, and no
+      // corner, so every boundary vertex has four quads (an open seam would leave a boundary
+      // ring of valence-3 vertices, a doubled one over-shared quads).
+      HexMeshValidity validity;
+      PCH_CHECK(checkHexMeshValidity(result.Mesh, validity).Ok());
+      std::cout << c.Name << (finish ? " (padding, smoothing)" : " (raw)") << ": "
+                << result.HexCount << " hexes, SJ min " << result.ScaledJacobianMin << " mean "
+                << result.ScaledJacobianMean << "; " << validity.Report << "\n";
+      PCH_CHECK(validity.IsValid());
+      PCH_CHECK(validity.IrregularBoundaryVertexCount == 0);
+      PCH_CHECK(result.InvertedHexCount == 0);
+      // Within 10 % of the target for the lattice; with padding the ring's section is only
+      // about four hexes wide, and rounding it by half a hex per side moves the count by more.
+      PCH_CHECK(std::abs(result.HexCount - params.TargetHexCount) <=
+        (finish ? 0.35 : 0.1) * params.TargetHexCount);
+      // The raw lattice follows the map's distortion (the torus's inner side is shorter than
+      // its outer side); the finished mesh must be good.
+      PCH_CHECK(result.ScaledJacobianMin > (finish ? 0.5 : 0.0));
+      for (const std::string& warning : result.Warnings)
+      {
+        std::cout << "  warning: " << warning << "\n";
+      }
     }
   }
   return PCH_TEST_RESULT();
