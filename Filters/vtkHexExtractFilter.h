@@ -10,6 +10,13 @@
  * coordinates and connects the unit cubes into hexes. An optional padding layer and a
  * quality-guarded smoothing follow.
  *
+ * A closed-form polycube (Guidance FrameField on a model with handles) is the cut mesh: its cut
+ * faces carry no label and the fields `CutTransitions` and `CutTranslations` relate the two
+ * sides, u_plus = Pi u_minus + t. The cut translations are then rounded to integers with the
+ * planes, and the extraction, the padding and the smoothing walk across the cuts through the
+ * transitions, so the hex mesh is seamless (one vertex per point of a cut). The field
+ * `IntegerCutTranslations` gives each cut's translation in hex edges.
+ *
  * Output port 0: the hexes with cell `ScaledJacobian` (vtkMeshQuality) and field data
  * `HexCount`, `ScaledJacobianMin`, `ScaledJacobianMean`, `InvertedHexCount`,
  * `IrregularBoundaryVertexCount`, `DistanceMean`, `DistanceHausdorff` (symmetric sampled
