@@ -4,10 +4,12 @@
 // inverted tets. Not run by CTest.
 //
 //   BenchPolycube [mesh.mesh = Data/rockerarm.mesh] [runs = 3] [output.mesh]
+//   PCH_FRAMES=cuts BenchPolycube ...   (the closed form: cuts, frames with transitions)
 //
 // With an output path, the polycube of the last run is written as MEDIT (tets and boundary
 // triangles).
 #include "FrameField.h"
+#include "HandleCuts.h"
 #include "MeditFormat.h"
 #include "PolycubeDeformation.h"
 
@@ -62,17 +64,48 @@ int main(int argc, char* argv[])
   {
     params.FlattenIterations = std::atoi(value);
   }
+  if (std::getenv("PCH_DIRECT"))
+  {
+    params.LinearSolver = PolycubeParameters::LinearSolverType::Direct;
+  }
   if (const char* value = std::getenv("PCH_COLLAPSE_RELABEL_ATTEMPTS"))
   {
     params.CollapseRelabelAttempts = std::atoi(value);
   }
-  // PCH_FRAMES=1: FrameField guidance with the frame field of the uncut mesh.
+  // PCH_FRAMES=1: FrameField guidance with the frame field of the uncut mesh; PCH_FRAMES=cuts:
+  // the closed form (handle cuts, the frame field with its transitions, the cut mesh).
   std::vector<Eigen::Matrix3d> frames;
+  PolycubeCuts cuts;
+  const bool closedForm = std::getenv("PCH_FRAMES") && std::string(std::getenv("PCH_FRAMES")) == "cuts";
   if (std::getenv("PCH_FRAMES"))
   {
     FrameFieldResult field;
+    CutFaces cutFaces;
+    if (closedForm)
+    {
+      HandleCutResult handles;
+      const Status cut = ComputeHandleCuts(mesh, HandleCutParameters(), handles);
+      if (!cut)
+      {
+        std::fprintf(stderr, "%s\n", cut.Message().c_str());
+        return 1;
+      }
+      cutFaces.Ids = handles.CutFaces;
+      cutFaces.Sides = handles.CutSide;
+      cuts.FaceCut = handles.CutFaces;
+      cuts.FaceSide = handles.CutSide;
+    }
     const auto frameStart = std::chrono::steady_clock::now();
-    const Status computed = ComputeFrameField(mesh, CutFaces(), FrameFieldParameters(), field);
+    const Status computed = ComputeFrameField(mesh, cutFaces, FrameFieldParameters(), field);
+    for (Eigen::Index c = 0; c < field.CutTransitions.rows(); ++c)
+    {
+      Eigen::Matrix3i pi;
+      for (int a = 0; a < 9; ++a)
+      {
+        pi(a / 3, a % 3) = field.CutTransitions(c, a);
+      }
+      cuts.Transitions.push_back(pi);
+    }
     if (!computed)
     {
       std::fprintf(stderr, "%s\n", computed.Message().c_str());
@@ -92,7 +125,8 @@ int main(int argc, char* argv[])
   std::vector<double> total, rotation, optimization, labeling, flattening;
   for (int run = 0; run < runs; ++run)
   {
-    const Status status = ComputePolycube(mesh, params, result, {}, frames);
+    const Status status =
+      ComputePolycube(mesh, params, result, {}, frames, closedForm ? &cuts : nullptr);
     if (!status)
     {
       std::fprintf(stderr, "%s\n", status.Message().c_str());
