@@ -331,20 +331,27 @@ int MatchLabelsAcrossCuts(const std::vector<std::array<int, 3>>& across,
 {
   // Which side gives way: first the face whose normal still points along its new label (no
   // face folds over), then the one whose other neighbours already carry the new label (no
-  // one-face tooth is left behind).
+  // one-face tooth is left behind). A face may give way only if it keeps a neighbour of the new
+  // label on its side or its normal is within 60 degrees of the label; -1 otherwise.
   auto score = [&](int face, int label, int other)
   {
     const Eigen::Vector3d p0 = x.row(faces(face, 0)).transpose();
     const Eigen::Vector3d normal = (x.row(faces(face, 1)).transpose() - p0)
                                      .cross(x.row(faces(face, 2)).transpose() - p0);
-    const double along = (label % 2 == 0 ? 1.0 : -1.0) * normal(label / 2);
-    int count = along > 0.0 ? 10 : 0;
+    const double length = normal.norm();
+    const double along =
+      length > 0.0 ? (label % 2 == 0 ? 1.0 : -1.0) * normal(label / 2) / length : 0.0;
+    int count = 0;
     for (int e = 0; e < 3; ++e)
     {
       const int n = adjacency(face, e);
       count += n >= 0 && n != other && labels[static_cast<size_t>(n)] == label ? 1 : 0;
     }
-    return count;
+    if (count == 0 && !(along > 0.5))
+    {
+      return -1;
+    }
+    return (along > 0.0 ? 10 : 0) + count;
   };
   int changed = 0;
   for (const auto& pair : across)
@@ -358,7 +365,13 @@ int MatchLabelsAcrossCuts(const std::vector<std::array<int, 3>>& across,
       continue;
     }
     const int minusLabel = TransformLabel(pi.transpose(), labels[static_cast<size_t>(plus)]);
-    if (score(plus, plusLabel, minus) >= score(minus, minusLabel, plus))
+    const int plusScore = score(plus, plusLabel, minus);
+    const int minusScore = score(minus, minusLabel, plus);
+    if (plusScore < 0 && minusScore < 0)
+    {
+      continue; // a crease along the loop
+    }
+    if (plusScore >= minusScore)
     {
       labels[static_cast<size_t>(plus)] = plusLabel;
     }
@@ -368,6 +381,26 @@ int MatchLabelsAcrossCuts(const std::vector<std::array<int, 3>>& across,
     }
     ++changed;
   }
+  return changed;
+}
+
+int CleanUpCutMeshLabels(const Points& x,
+  const Triangles& faces,
+  const Triangles& adjacency,
+  const std::vector<CopyRelation>& copies,
+  const std::vector<Eigen::Matrix3i>& transitions,
+  const PolycubeChartCleanup& settings,
+  std::vector<int>& labels)
+{
+  int changed = CleanUpPolycubeCharts(x, faces, adjacency, settings, labels);
+  if (copies.empty())
+  {
+    return changed;
+  }
+  const std::vector<std::array<int, 3>> across = FacesAcrossCuts(faces, adjacency, copies);
+  // No second clean-up: it compares labels across a cut without the transition, and would undo
+  // matches across a twisted cut. The matching itself leaves no face across its normal.
+  changed += MatchLabelsAcrossCuts(across, x, faces, adjacency, transitions, labels);
   return changed;
 }
 

@@ -11,6 +11,7 @@
 
 #include "CoordinateRelations.h"
 #include "MeshTypes.h"
+#include "PolycubeCharts.h"
 #include "Status.h"
 #include "TetGeometry.h"
 
@@ -86,16 +87,32 @@ std::vector<std::array<int, 3>> FacesAcrossCuts(const Triangles& faces,
   const Triangles& adjacency,
   const std::vector<CopyRelation>& copies);
 
-/// Makes the labels agree across every cut's loop: of two neighbours across it whose labels are
-/// not related by Pi_c, one takes the other's label transformed: preferably one whose normal
-/// (in positions `x`) points along the new label, then one whose other neighbours carry it. Chart boundaries then cross the loop at copies of
-/// one vertex, which the transitions need (otherwise a vertex inside a chart on one side is
-/// held on a chart edge by its copy, and the faces between collapse). Returns the changes.
+/// Makes the labels agree across every cut's loop where that costs no fold: of two neighbours
+/// across it whose labels are not related by Pi_c, one takes the other's label transformed, but
+/// only a face that then keeps a neighbour of that label on its own side or whose normal (in
+/// positions `x`) lies within 60 degrees of the new label. Chart boundaries then cross the loop
+/// at copies of one vertex. A pair where neither face may give way (the loop runs along a crease
+/// of M: the faces' normals differ by 90 degrees) keeps its labels: forcing one face would make
+/// a one-face chart on its side of the cut whose normal is perpendicular to its label, which the
+/// flattening collapses (it cannot be flat without two of its edges on one crease line). Returns
+/// the changes.
 int MatchLabelsAcrossCuts(const std::vector<std::array<int, 3>>& across,
   const Points& x,
   const Triangles& faces,
   const Triangles& adjacency,
   const std::vector<Eigen::Matrix3i>& transitions,
+  std::vector<int>& labels);
+
+/// The labels of the boundary of a cut mesh cleaned up (CleanUpPolycubeCharts on `adjacency`,
+/// built on identities), then matched across the cuts (MatchLabelsAcrossCuts) where that folds
+/// no face; a pair left unmatched is a chart boundary along the cut's loop. Without copies, the
+/// clean-up alone. Returns the number of changes.
+int CleanUpCutMeshLabels(const Points& x,
+  const Triangles& faces,
+  const Triangles& adjacency,
+  const std::vector<CopyRelation>& copies,
+  const std::vector<Eigen::Matrix3i>& transitions,
+  const PolycubeChartCleanup& settings,
   std::vector<int>& labels);
 
 /// Per face, its chart with charts that continue across a cut (labels related by the

@@ -735,20 +735,17 @@ Status ComputePolycube(const TetMesh& input,
     // (It also catches islands; exempting only the loops that cross a cut is left to do.)
     cleanup.MinBoundaryTurns = 0;
   }
-  // Clean-up, and on a cut mesh labels that agree across the cuts; returns the changes.
+  // Clean-up, and on a cut mesh labels that agree across the cuts where that folds no face (a
+  // chart boundary may run along a cut's loop); returns the changes.
   auto cleanUpLabels = [&]()
   {
-    int changed = CleanUpPolycubeCharts(mesh.X, topology.BoundaryFaces, adjacency, cleanup, labels);
-    if (closedForm)
-    {
-      changed += MatchLabelsAcrossCuts(FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies),
-        mesh.X,
-        topology.BoundaryFaces,
-        adjacency,
-        mesh.Transitions,
-        labels);
-    }
-    return changed;
+    return CleanUpCutMeshLabels(mesh.X,
+      topology.BoundaryFaces,
+      adjacency,
+      closedForm ? mesh.Copies : std::vector<CopyRelation>(),
+      mesh.Transitions,
+      cleanup,
+      labels);
   };
   out.RelabelledFaceCount = cleanUpLabels();
   // Labels that cannot be flattened (a tongue of one chart squeezed between two sides of
