@@ -152,9 +152,9 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     }
     frameGuided = true;
   }
-  // AUTOMATIC runs Uniform until the hex extraction is stitched across cuts: the closed-form
-  // polycube of a model with handles cannot be meshed yet. The Guidance field of the output
-  // says which one ran.
+  // AUTOMATIC runs Uniform for now: the closed form's hexes are seamless, but on kitten and
+  // rockerarm they keep a few inverted hexes. The Guidance field of the output says which one
+  // ran.
   if (!frameGuided)
   {
     frames.clear();

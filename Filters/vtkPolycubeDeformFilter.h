@@ -17,8 +17,9 @@
  * copies across cut c are tied by x_plus = Pi_c x_minus + t_c (eq. 8) with t_c unknown, in the
  * fit (one linear solve), the l1 stage and the flattening, so that a torus becomes a bar with no
  * corner. Output port 0 is then the cut mesh (points of cut faces duplicated, one copy per side)
- * and the field `CutTranslations` holds t_c. Hex extraction is not yet stitched across cuts, so
- * Automatic (the default) runs Uniform for now.
+ * and the field `CutTranslations` holds t_c, which vtkHexExtractFilter uses to stitch the hexes
+ * across the cuts. Automatic (the default) runs Uniform for now: on kitten and rockerarm the
+ * closed form's hex meshes still have a few inverted hexes (see README and BENCHMARKS.md).
  *
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
@@ -46,8 +47,7 @@ public:
   };
 
   ///@{
-  /// What guides the polycube. Default AUTOMATIC (Uniform until the hex extraction is stitched
-  /// across cuts). See the class comment.
+  /// What guides the polycube. Default AUTOMATIC (Uniform for now). See the class comment.
   vtkSetClampMacro(Guidance, int, AUTOMATIC, UNIFORM);
   vtkGetMacro(Guidance, int);
   ///@}

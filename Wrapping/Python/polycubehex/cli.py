@@ -54,7 +54,7 @@ def main(argv=None):
     parser.add_argument("--guidance", choices=["automatic", "framefield", "uniform"],
                         default="automatic",
                         help="what guides the polycube: automatic (today: uniform), framefield "
-                        "(models without handles only, for now) or uniform (the l1 baseline)")
+                        "(the closed form) or uniform (the l1 baseline)")
     parser.add_argument("--uniform", action="store_true", help="same as --guidance uniform")
     parser.add_argument("--no-padding", action="store_true", help="no padding layer")
     parser.add_argument("--no-smoothing", action="store_true", help="the raw extraction")
