@@ -11,9 +11,10 @@
 // changes. The rest metric matters: the polycube's own tets are often slivers, and the FEM
 // Laplacian on them breaks the maximum principle badly (a plane moved by 0.3 dragged an interior
 // vertex by 1.7 and inverted a tet on Data/torus.obj); on the input's quality tets the
-// displacement interpolates the plane moves. It is separable per axis today, and a cut
-// transition u_plus = Pi u_minus + t (later) couples the axes only through the elimination of
-// the plus-side coordinates, with t as three more integer variables.
+// displacement interpolates the plane moves. Without cuts it is separable per axis; a cut
+// transition u_plus = Pi u_minus + t (Fang et al. §4.3) couples the axes only through the
+// identification of the plus-side coordinates with the minus side's (CoordinateRelations), with
+// t as three more integer variables: x = Bf f + Bz z + Offset, z the planes and translations.
 //
 // The planes are eliminated once: the free coordinates are factored (one sparse LDL^T), and the
 // energy is reduced to a dense quadratic in the plane values (a Schur complement), so each greedy
