@@ -155,6 +155,34 @@ std::vector<std::array<int, 2>> MirrorEdgesAcrossCuts(const std::vector<std::arr
   return result;
 }
 
+void SortCopiesAlike(std::vector<std::array<int, 2>>& edges,
+  std::vector<std::array<int, 3>>& partnerEdges,
+  const std::vector<int>& identity)
+{
+  std::vector<std::array<int, 3>> keys(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    const int a = identity[static_cast<size_t>(edges[e][0])];
+    const int b = identity[static_cast<size_t>(edges[e][1])];
+    keys[e] = { std::min(a, b), std::max(a, b), static_cast<int>(e) };
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::array<int, 2>> sorted(edges.size());
+  std::vector<int> position(edges.size());
+  for (size_t i = 0; i < keys.size(); ++i)
+  {
+    const int e = keys[i][2];
+    sorted[i] = edges[static_cast<size_t>(e)];
+    position[static_cast<size_t>(e)] = static_cast<int>(i);
+  }
+  edges = sorted;
+  for (auto& pair : partnerEdges)
+  {
+    pair[0] = position[static_cast<size_t>(pair[0])];
+    pair[1] = position[static_cast<size_t>(pair[1])];
+  }
+}
+
 void AddMidpointCopies(const std::vector<std::array<int, 2>>& edges,
   const std::vector<std::array<int, 3>>& partnerEdges,
   const std::vector<std::array<int, 2>>& midpointParents,

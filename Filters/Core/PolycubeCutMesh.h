@@ -61,6 +61,15 @@ std::vector<std::array<int, 2>> MirrorEdgesAcrossCuts(const std::vector<std::arr
   int vertexCount,
   std::vector<std::array<int, 3>>& partnerEdges);
 
+/// Orders the edges to split by the points of M they join, so that every copy of an edge is
+/// split at the same step. The halves a face gets when two of its edges are split depend on the
+/// order: a cut face whose copies were split in different orders would be triangulated
+/// differently on the two sides, its pieces would no longer be copies of each other, and they
+/// would count as (folded) boundary faces of M. `partnerEdges` (indices into `edges`) follow.
+void SortCopiesAlike(std::vector<std::array<int, 2>>& edges,
+  std::vector<std::array<int, 3>>& partnerEdges,
+  const std::vector<int>& identity);
+
 /// After SplitTetEdges on `edges` (midpoint i is vertex firstNew + i, in `midpointParents`
 /// order), the copy relations of the new midpoints and their identities.
 void AddMidpointCopies(const std::vector<std::array<int, 2>>& edges,

@@ -61,8 +61,12 @@ void SplitEdges(WorkMesh& mesh, const std::vector<std::array<int, 2>>& requested
   const int n = mesh.VertexCount();
   // On a cut mesh, an edge split on one side of a cut is split on the other too.
   std::vector<std::array<int, 3>> partnerEdges;
-  const std::vector<std::array<int, 2>> edges =
+  std::vector<std::array<int, 2>> edges =
     MirrorEdgesAcrossCuts(requested, mesh.Copies, n, partnerEdges);
+  if (!mesh.Copies.empty())
+  {
+    SortCopiesAlike(edges, partnerEdges, mesh.Identity);
+  }
   std::vector<int> parentLocal;
   std::vector<std::array<int, 2>> parents;
   SplitTetEdges(n, mesh.Cells, edges, parentLocal, parents);
@@ -251,6 +255,28 @@ Triangles BoundaryAdjacency(const WorkMesh& mesh, const Triangles& faces)
   return mesh.Copies.empty()
     ? ComputeFaceAdjacency(mesh.VertexCount(), faces)
     : ComputeFaceAdjacency(mesh.VertexCount(), IdentityFaces(faces, mesh.Identity));
+}
+
+/// On a cut mesh, the boundary faces that are neighbours on M across a cut's loop, with the
+/// cut's transition, so that the normal difference (12) reaches across the loop; empty without
+/// cuts.
+std::vector<FacePairAcrossCut> NormalPairsAcrossCuts(const WorkMesh& mesh, const TetTopology& topology)
+{
+  std::vector<FacePairAcrossCut> pairs;
+  if (mesh.Copies.empty())
+  {
+    return pairs;
+  }
+  for (const auto& across : FacesAcrossCuts(
+         topology.BoundaryFaces, BoundaryAdjacency(mesh, topology.BoundaryFaces), mesh.Copies))
+  {
+    FacePairAcrossCut pair;
+    pair.MinusFace = across[0];
+    pair.PlusFace = across[1];
+    pair.Transition = mesh.Transitions[static_cast<size_t>(across[2])].cast<double>();
+    pairs.push_back(pair);
+  }
+  return pairs;
 }
 
 /// The charts whose faces share one plane: on a cut mesh, a chart of M that runs across a cut
@@ -655,7 +681,8 @@ Status ComputePolycube(const TetMesh& input,
     : NewtonSettings::LinearSolverType::BlockPcg;
   double finalBarrier = params.BarrierWeight;
   {
-    PolycubeEnergy energy(mesh.Rest, mesh.Cells, topology.BoundaryFaces);
+    PolycubeEnergy energy(
+      mesh.Rest, mesh.Cells, topology.BoundaryFaces, NormalPairsAcrossCuts(mesh, topology));
     VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
     if (closedForm)
     {

@@ -155,7 +155,8 @@ Eigen::SparseMatrix<double> BlockPattern::ZeroMatrix() const
 
 PolycubeEnergy::PolycubeEnergy(const Points& rest,
   const Tets& cells,
-  const Triangles& boundaryFaces)
+  const Triangles& boundaryFaces,
+  const std::vector<FacePairAcrossCut>& acrossCuts)
   : NumVertices(static_cast<int>(rest.rows()))
   , Cells(cells)
   , Faces(boundaryFaces)
@@ -208,52 +209,83 @@ PolycubeEnergy::PolycubeEnergy(const Points& rest,
       }
     }
   }
+  // Face 0's corners, then face 1's corners that are not among them.
+  auto addDiffEdge = [&](int f, int g, const Eigen::Matrix3d& rotation, bool rotated)
+  {
+    DiffEdge edge;
+    edge.Faces = { f, g };
+    edge.Vertices.fill(-1);
+    for (int c = 0; c < 3; ++c)
+    {
+      edge.Vertices[static_cast<size_t>(c)] = boundaryFaces(f, c);
+    }
+    edge.VertexCount = 3;
+    for (int c = 0; c < 3; ++c)
+    {
+      const int v = boundaryFaces(g, c);
+      int slot = -1;
+      for (int k = 0; k < 3; ++k)
+      {
+        if (edge.Vertices[static_cast<size_t>(k)] == v)
+        {
+          slot = k;
+        }
+      }
+      if (slot < 0)
+      {
+        slot = edge.VertexCount++;
+        edge.Vertices[static_cast<size_t>(slot)] = v;
+      }
+      edge.Face1Slots[static_cast<size_t>(c)] = slot;
+    }
+    if (edge.VertexCount == 3)
+    {
+      return; // two faces on the same three vertices: degenerate surface
+    }
+    edge.Rotation = rotation;
+    edge.Rotated = rotated;
+    edge.Weight = (faceArea[static_cast<size_t>(f)] + faceArea[static_cast<size_t>(g)]) /
+      (3.0 * this->RestArea);
+    this->DiffEdges.push_back(edge);
+    // Pairs within a face are already in the pattern (its tet's).
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 3; j < edge.VertexCount; ++j)
+      {
+        pairs.push_back({ edge.Vertices[static_cast<size_t>(i)], edge.Vertices[static_cast<size_t>(j)] });
+      }
+    }
+    for (int i = 3; i < edge.VertexCount; ++i)
+    {
+      for (int j = i + 1; j < edge.VertexCount; ++j)
+      {
+        pairs.push_back({ edge.Vertices[static_cast<size_t>(i)], edge.Vertices[static_cast<size_t>(j)] });
+      }
+    }
+  };
   const Triangles adjacency = ComputeFaceAdjacency(this->NumVertices, boundaryFaces);
   for (int f = 0; f < faceCount; ++f)
   {
     for (int e = 0; e < 3; ++e)
     {
       const int g = adjacency(f, e);
-      if (g <= f)
+      if (g > f)
       {
-        continue;
+        addDiffEdge(f, g, Eigen::Matrix3d::Identity(), false);
       }
-      DiffEdge edge;
-      edge.Faces = { f, g };
-      for (int c = 0; c < 3; ++c)
-      {
-        edge.Vertices[static_cast<size_t>(c)] = boundaryFaces(f, c);
-      }
-      edge.Vertices[3] = -1;
-      for (int c = 0; c < 3; ++c)
-      {
-        const int v = boundaryFaces(g, c);
-        int slot = -1;
-        for (int k = 0; k < 3; ++k)
-        {
-          if (edge.Vertices[static_cast<size_t>(k)] == v)
-          {
-            slot = k;
-          }
-        }
-        if (slot < 0)
-        {
-          edge.Vertices[3] = v;
-          slot = 3;
-        }
-        edge.Face1Slots[static_cast<size_t>(c)] = slot;
-      }
-      if (edge.Vertices[3] < 0)
-      {
-        continue; // two faces on the same three vertices: degenerate surface
-      }
-      edge.Weight = (faceArea[static_cast<size_t>(f)] + faceArea[static_cast<size_t>(g)]) /
-        (3.0 * this->RestArea);
-      this->DiffEdges.push_back(edge);
-      pairs.push_back({ edge.Vertices[0], edge.Vertices[3] });
-      pairs.push_back({ edge.Vertices[1], edge.Vertices[3] });
-      pairs.push_back({ edge.Vertices[2], edge.Vertices[3] });
     }
+  }
+  for (const FacePairAcrossCut& pair : acrossCuts)
+  {
+    if (pair.MinusFace < 0 || pair.MinusFace >= faceCount || pair.PlusFace < 0 ||
+      pair.PlusFace >= faceCount)
+    {
+      continue;
+    }
+    addDiffEdge(pair.MinusFace,
+      pair.PlusFace,
+      pair.Transition,
+      !pair.Transition.isApprox(Eigen::Matrix3d::Identity()));
   }
   this->Blocks.Build(this->NumVertices, pairs);
 
@@ -283,11 +315,12 @@ PolycubeEnergy::PolycubeEnergy(const Points& rest,
   }
   for (auto& edge : this->DiffEdges)
   {
-    for (int i = 0; i < 4; ++i)
+    edge.Pairs.fill(-1);
+    for (int i = 0; i < edge.VertexCount; ++i)
     {
-      for (int j = 0; j < 4; ++j)
+      for (int j = 0; j < edge.VertexCount; ++j)
       {
-        edge.Pairs[static_cast<size_t>(4 * i + j)] = this->Blocks.Find(
+        edge.Pairs[static_cast<size_t>(6 * i + j)] = this->Blocks.Find(
           edge.Vertices[static_cast<size_t>(i)], edge.Vertices[static_cast<size_t>(j)]);
       }
     }
@@ -647,8 +680,9 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
   double difference = 0.0;
   for (const DiffEdge& edge : this->DiffEdges)
   {
-    difference += edge.Weight *
-      (normal[static_cast<size_t>(edge.Faces[0])] - normal[static_cast<size_t>(edge.Faces[1])])
+    const Eigen::Vector3d& n0 = normal[static_cast<size_t>(edge.Faces[0])];
+    const Eigen::Vector3d& n1 = normal[static_cast<size_t>(edge.Faces[1])];
+    difference += edge.Weight * ((edge.Rotated ? Eigen::Vector3d(edge.Rotation * n0) : n0) - n1)
         .squaredNorm();
   }
   terms.Difference = difference;
@@ -835,33 +869,43 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
     {
       const int f = edge.Faces[0];
       const int g = edge.Faces[1];
-      const Eigen::Vector3d d = normal[static_cast<size_t>(f)] - normal[static_cast<size_t>(g)];
+      // d = R n_f - n_g, its Jacobian per vertex of the edge.
+      const Eigen::Vector3d d = (edge.Rotated
+          ? Eigen::Vector3d(edge.Rotation * normal[static_cast<size_t>(f)])
+          : normal[static_cast<size_t>(f)]) -
+        normal[static_cast<size_t>(g)];
       const double c = 2.0 * w.NormalDifference * edge.Weight;
-      std::array<Eigen::Matrix3d, 4> jd;
+      const int count = edge.VertexCount;
+      std::array<Eigen::Matrix3d, 6> jd;
       for (int k = 0; k < 3; ++k)
       {
-        jd[static_cast<size_t>(k)] = jn[static_cast<size_t>(f)][static_cast<size_t>(k)];
+        jd[static_cast<size_t>(k)] = edge.Rotated
+          ? Eigen::Matrix3d(edge.Rotation * jn[static_cast<size_t>(f)][static_cast<size_t>(k)])
+          : jn[static_cast<size_t>(f)][static_cast<size_t>(k)];
       }
-      jd[3].setZero();
+      for (int k = 3; k < count; ++k)
+      {
+        jd[static_cast<size_t>(k)].setZero();
+      }
       for (int k = 0; k < 3; ++k)
       {
         jd[static_cast<size_t>(edge.Face1Slots[static_cast<size_t>(k)])] -=
           jn[static_cast<size_t>(g)][static_cast<size_t>(k)];
       }
-      for (int k = 0; k < 4; ++k)
+      for (int k = 0; k < count; ++k)
       {
         gradient.segment<3>(3 * edge.Vertices[static_cast<size_t>(k)]) +=
           c * jd[static_cast<size_t>(k)].transpose() * d;
       }
       if (h)
       {
-        for (int i = 0; i < 4; ++i)
+        for (int i = 0; i < count; ++i)
         {
-          for (int j = 0; j < 4; ++j)
+          for (int j = 0; j < count; ++j)
           {
             AddBlock(h,
               this->Blocks,
-              edge.Pairs[static_cast<size_t>(4 * i + j)],
+              edge.Pairs[static_cast<size_t>(6 * i + j)],
               c * jd[static_cast<size_t>(i)].transpose() * jd[static_cast<size_t>(j)]);
           }
         }

@@ -87,6 +87,16 @@ public:
   std::vector<int> Stride; ///< distance between the columns of a block in the value array
 };
 
+/// Two boundary faces that are neighbours on the input M but not on the cut mesh M_c: they sit
+/// on the two sides of a cut's loop. Eq. (12) compares them through the cut's transition,
+/// Pi n_minus against n_plus (Fang et al. §4.2: normals are transformed across cut boundaries).
+struct FacePairAcrossCut
+{
+  int MinusFace = -1;         ///< boundary face on the cut's minus side
+  int PlusFace = -1;          ///< its neighbour on M, on the plus side
+  Eigen::Matrix3d Transition; ///< Pi_c
+};
+
 /// Evaluates the energy on the positions x (3#V, x[3v+a] = coordinate a of vertex v).
 class PolycubeEnergy
 {
@@ -94,7 +104,12 @@ public:
   /// @param rest           #V by 3 rest positions (the normalised input), positive tets
   /// @param cells          #T by 4 tets
   /// @param boundaryFaces  #F by 3 boundary triangles, oriented outwards
-  PolycubeEnergy(const Points& rest, const Tets& cells, const Triangles& boundaryFaces);
+  /// @param acrossCuts     on a cut mesh, the neighbours across the cuts' loops, whose normal
+  ///                       difference (12) is taken through the transition (empty otherwise)
+  PolycubeEnergy(const Points& rest,
+    const Tets& cells,
+    const Triangles& boundaryFaces,
+    const std::vector<FacePairAcrossCut>& acrossCuts = {});
 
   void SetWeights(const PolycubeEnergyWeights& weights) { this->Weights = weights; }
 
@@ -160,13 +175,19 @@ public:
   double RestBoundaryArea() const { return this->RestArea; }
 
 private:
+  /// One term of eq. (12): Weight |Rotation n_0 - n_1|^2 for the faces' unit normals n_0, n_1.
   struct DiffEdge
   {
     std::array<int, 2> Faces;      ///< the two boundary faces
-    std::array<int, 4> Vertices;   ///< face 0's corners, then the opposite corner of face 1
+    /// face 0's corners, then face 1's corners that are not face 0's: 4 vertices for two faces
+    /// that share an edge, 6 across a cut (the shared edge is two pairs of copies)
+    std::array<int, 6> Vertices;
+    int VertexCount;
     std::array<int, 3> Face1Slots; ///< position in Vertices of face 1's corners
+    Eigen::Matrix3d Rotation;      ///< identity, or Pi_c across a cut
+    bool Rotated;                  ///< Rotation is not the identity
     double Weight;                 ///< (A_i + A_j) / (3 A)
-    std::array<int, 16> Pairs;     ///< block positions of (Vertices[i], Vertices[j])
+    std::array<int, 36> Pairs;     ///< block positions of (Vertices[i], Vertices[j])
   };
 
   void ArapTerm(const double* x,
