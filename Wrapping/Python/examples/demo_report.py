@@ -163,6 +163,7 @@ def main():
     chart.ViewSize = args.size
     chart.BottomAxisTitle = "scaled Jacobian"
     chart.LeftAxisTitle = "hexes"
+    chart.ShowLegend = 0  # one series: its name ("bin_values") says nothing
     bars = simple.Show(histogram, chart)
     bars.SeriesVisibility = ["bin_values"]
     simple.Render(chart)
