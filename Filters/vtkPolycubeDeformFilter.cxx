@@ -51,6 +51,7 @@ vtkPolycubeDeformFilter::vtkPolycubeDeformFilter()
   this->MaxRounds = defaults.MaxRounds;
   this->ResidualTolerance = defaults.ResidualTolerance;
   this->NormalDifferenceWeight = defaults.NormalDifferenceWeight;
+  this->NormalDifferenceAcrossCuts = defaults.NormalDifferenceAcrossCuts;
   this->MinChartAreaFraction = defaults.MinChartAreaFraction;
   this->Flatten = defaults.Flatten;
 }
@@ -178,6 +179,7 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   params.MaxRounds = this->MaxRounds;
   params.ResidualTolerance = this->ResidualTolerance;
   params.NormalDifferenceWeight = this->NormalDifferenceWeight;
+  params.NormalDifferenceAcrossCuts = this->NormalDifferenceAcrossCuts;
   params.MinChartAreaFraction = this->MinChartAreaFraction;
   params.Flatten = this->Flatten;
   auto progress = [this](double fraction)
@@ -308,6 +310,7 @@ void vtkPolycubeDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxRounds: " << this->MaxRounds << "\n";
   os << indent << "ResidualTolerance: " << this->ResidualTolerance << "\n";
   os << indent << "NormalDifferenceWeight: " << this->NormalDifferenceWeight << "\n";
+  os << indent << "NormalDifferenceAcrossCuts: " << this->NormalDifferenceAcrossCuts << "\n";
   os << indent << "MinChartAreaFraction: " << this->MinChartAreaFraction << "\n";
   os << indent << "Flatten: " << this->Flatten << "\n";
 }

@@ -102,6 +102,14 @@ public:
   ///@}
 
   ///@{
+  /// On a cut mesh, let the normal difference (12) reach across each cut's loop, through the
+  /// cut's transition (as the paper). Default off (see PolycubeParameters).
+  vtkSetMacro(NormalDifferenceAcrossCuts, bool);
+  vtkGetMacro(NormalDifferenceAcrossCuts, bool);
+  vtkBooleanMacro(NormalDifferenceAcrossCuts, bool);
+  ///@}
+
+  ///@{
   /// Charts smaller than this fraction of the boundary area are merged into a neighbour.
   /// Default 2e-4, in [0, 0.1].
   vtkSetClampMacro(MinChartAreaFraction, double, 0.0, 0.1);
@@ -132,6 +140,7 @@ protected:
   int MaxRounds = 30;
   double ResidualTolerance = 1e-3;
   double NormalDifferenceWeight = 1.0;
+  bool NormalDifferenceAcrossCuts = false;
   double MinChartAreaFraction = 2e-4;
   bool Flatten = true;
 

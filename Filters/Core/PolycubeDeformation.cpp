@@ -260,10 +260,12 @@ Triangles BoundaryAdjacency(const WorkMesh& mesh, const Triangles& faces)
 /// On a cut mesh, the boundary faces that are neighbours on M across a cut's loop, with the
 /// cut's transition, so that the normal difference (12) reaches across the loop; empty without
 /// cuts.
-std::vector<FacePairAcrossCut> NormalPairsAcrossCuts(const WorkMesh& mesh, const TetTopology& topology)
+std::vector<FacePairAcrossCut> NormalPairsAcrossCuts(const WorkMesh& mesh,
+  const TetTopology& topology,
+  bool wanted)
 {
   std::vector<FacePairAcrossCut> pairs;
-  if (mesh.Copies.empty())
+  if (mesh.Copies.empty() || !wanted)
   {
     return pairs;
   }
@@ -682,7 +684,7 @@ Status ComputePolycube(const TetMesh& input,
   double finalBarrier = params.BarrierWeight;
   {
     PolycubeEnergy energy(
-      mesh.Rest, mesh.Cells, topology.BoundaryFaces, NormalPairsAcrossCuts(mesh, topology));
+      mesh.Rest, mesh.Cells, topology.BoundaryFaces, NormalPairsAcrossCuts(mesh, topology, params.NormalDifferenceAcrossCuts));
     VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
     if (closedForm)
     {

@@ -69,6 +69,11 @@ struct PolycubeParameters
   /// rockerarm: 0 gives 74 charts and 137 corners, 0.3 gives 54 and 100, 1 gives 39 and 70, at
   /// about the same cost.
   double NormalDifferenceWeight = 1.0;
+  /// On a cut mesh, also compare the normals of neighbours across each cut's loop, the minus
+  /// face's turned by Pi_c (Fang et al. §4.2). Off by default, by measurement: on kitten's closed
+  /// form it leaves 3 vertices off their planes and 5 tets inverted by the integer rounding (0
+  /// and 0 without), and on 3holes it changes nothing (32 corners, same hexes).
+  bool NormalDifferenceAcrossCuts = false;
   /// Penalty weight on (A / A_rest - 1)^2, A the boundary area (eq. 9's area constraint; the
   /// alignment term is normalised by the current area, so it has no incentive to shrink).
   double AreaWeight = 1.0;
