@@ -153,9 +153,12 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     }
     frameGuided = true;
   }
-  // AUTOMATIC runs Uniform for now: the closed form's hexes are seamless, but on kitten and
-  // rockerarm they keep a few inverted hexes. The Guidance field of the output says which one
-  // ran.
+  // AUTOMATIC: the closed form when the input has a frame field (DESIGN.md), else Uniform. The
+  // Guidance field of the output says which one ran.
+  if (this->Guidance == AUTOMATIC && hasFrames)
+  {
+    frameGuided = true;
+  }
   if (!frameGuided)
   {
     frames.clear();

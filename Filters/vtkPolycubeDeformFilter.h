@@ -18,8 +18,8 @@
  * fit (one linear solve), the l1 stage and the flattening, so that a torus becomes a bar with no
  * corner. Output port 0 is then the cut mesh (points of cut faces duplicated, one copy per side)
  * and the field `CutTranslations` holds t_c, which vtkHexExtractFilter uses to stitch the hexes
- * across the cuts. Automatic (the default) runs Uniform for now: on kitten and rockerarm the
- * closed form's hex meshes still have a few inverted hexes (see README and BENCHMARKS.md).
+ * across the cuts. Automatic (the default) runs FrameField when the input has a frame field
+ * (`Frame`, with `CutTransitions` when it has cuts), and Uniform otherwise.
  *
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
@@ -47,7 +47,8 @@ public:
   };
 
   ///@{
-  /// What guides the polycube. Default AUTOMATIC (Uniform for now). See the class comment.
+  /// What guides the polycube. Default AUTOMATIC (FrameField when the input has a frame field,
+  /// else Uniform). See the class comment.
   vtkSetClampMacro(Guidance, int, AUTOMATIC, UNIFORM);
   vtkGetMacro(Guidance, int);
   ///@}

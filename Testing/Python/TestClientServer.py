@@ -53,7 +53,9 @@ try:
     # data information already carries the counts.
     info = hexes.GetDataInformation()
     print("server: %d hexes, %d points" % (info.GetNumberOfCells(), info.GetNumberOfPoints()))
-    assert abs(info.GetNumberOfCells() - 1500) <= 150
+    # The closed form (Automatic) on this coarse torus: its section is about four hexes wide, so
+    # rounding the planes to integers moves the count by up to a quarter.
+    assert abs(info.GetNumberOfCells() - 1500) <= 375, info.GetNumberOfCells()
     summary = servermanager.Fetch(hexes).GetFieldData()
     valid = summary.GetArray("ValidHexMesh").GetTuple1(0)
     betti = summary.GetArray("BettiNumber").GetTuple1(0)

@@ -53,7 +53,7 @@ def main(argv=None):
                         help="target hex count, padding included (default 10000)")
     parser.add_argument("--guidance", choices=["automatic", "framefield", "uniform"],
                         default="automatic",
-                        help="what guides the polycube: automatic (today: uniform), framefield "
+                        help="what guides the polycube: automatic (the default: framefield), framefield "
                         "(the closed form) or uniform (the l1 baseline)")
     parser.add_argument("--uniform", action="store_true", help="same as --guidance uniform")
     parser.add_argument("--no-padding", action="store_true", help="no padding layer")
