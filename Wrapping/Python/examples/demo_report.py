@@ -6,7 +6,7 @@ the cuts with their handle loops, the frame field, the labelled polycube, the he
 by scaled Jacobian, a slice through it, and the scaled Jacobian histogram.
 
     xvfb-run -a pvbatch demo_report.py Data/rockerarm.mesh --output-dir build/demo \\
-        --plugin build/lib/paraview-5.11/plugins/PolycubeHex/PolycubeHex.so --hexes 24346
+        --plugin build/lib/paraview-5.11/plugins/PolycubeHex/PolycubeHex.so --hexes 17594
 
 with the build tree's python package on PYTHONPATH. Writes report.md, report.html (one page that
 shows the PNGs beside it), <model>_hexes.vtu and <model>_hexes.mesh, and the PNGs.
