@@ -712,13 +712,14 @@ Status ComputePolycube(const TetMesh& input,
       weights.NormalDifference = params.NormalDifferenceWeight;
       weights.Area = params.AreaWeight;
       weights.Barrier = params.BarrierWeight * std::max(1.0, weight);
-      weights.BarrierThreshold = params.BarrierThreshold;
+      weights.BarrierThreshold = params.AlignmentBarrierThreshold;
       finalBarrier = weights.Barrier;
       energy.SetWeights(weights);
       NewtonSettings settings;
       settings.LinearSolver = solverType;
       settings.MaxIterations = params.IterationsPerRound;
       NewtonStats stats;
+      const auto roundStart = Clock::now();
       const double base = 0.02 + 0.78 * round / rounds;
       status = solver.Minimize(x,
         settings,
@@ -731,6 +732,20 @@ Status ComputePolycube(const TetMesh& input,
       out.Iterations += stats.Iterations;
       out.Rounds = round + 1;
       out.Residual = stats.Terms.Residual;
+      PolycubeRound entry;
+      entry.Weight = weight;
+      entry.Epsilon = eps;
+      entry.Residual = stats.Terms.Residual;
+      entry.MinVolumeRatio = energy.MinVolumeRatio(x.data());
+      entry.Arap = stats.Terms.Arap;
+      entry.Iterations = stats.Iterations;
+      entry.CgIterations = stats.CgIterations;
+      entry.InfeasibleTrials = stats.InfeasibleTrials;
+      entry.ArmijoTrials = stats.ArmijoTrials;
+      entry.LastStep = stats.LastStep;
+      entry.LineSearchFailed = stats.LineSearchFailed;
+      entry.Seconds = SecondsSince(roundStart);
+      out.RoundLog.push_back(entry);
       if (out.Residual < params.ResidualTolerance)
       {
         out.Converged = true;

@@ -34,8 +34,9 @@ namespace polycubehex
 
 /// Settings of ComputePolycube. Lengths and areas are relative to the input's bounding-box
 /// diagonal (DESIGN.md "Scale"). The defaults were measured on Data/rockerarm.mesh (30.8k tets,
-/// genus 1): 12 rounds, residual 8.6e-4, 39 charts, 70 corners (the paper's l1 baseline: 88),
-/// no inverted tet, about 20 s on 2 shared cores.
+/// genus 1): 12 rounds, residual 8.0e-4, 39 charts, 70 corners (the paper's l1 baseline: 88),
+/// no inverted tet, about 20 s on 2 shared cores; AlignmentBarrierThreshold on fertility and
+/// elephant as well (TetGen -pq2.0, 78k and 75k tets), which stalled with the old 0.1.
 struct PolycubeParameters
 {
   /// Rotate the model first by the rotation minimising the area-weighted l1 norm of its normals
@@ -79,8 +80,18 @@ struct PolycubeParameters
   double AreaWeight = 1.0;
   /// Inversion barrier weight, multiplied by max(1, w_k) in round k (PolycubeEnergy.h).
   double BarrierWeight = 1.0;
-  /// Volume ratio (deformed / rest) below which the barrier acts.
+  /// Volume ratio (deformed / rest) below which the barrier acts (frame fit and flattening).
   double BarrierThreshold = 0.1;
+  /// The same in the continuation rounds. The barrier's Newton model only sees a tet inside its
+  /// zone, so a tet above it can be carried through zero volume by one step. At 0.1, on
+  /// fertility and elephant, thousands of tets ended up between 1e-5 and 0.1 of their volume,
+  /// every Newton step was halved 7-8 times to keep them positive, and the residual stalled
+  /// (0.039 and 0.0155 after 30 rounds). At 0.3 the steps keep their length: fertility converges
+  /// in 14 rounds (Uniform) and 13 (closed form), elephant in 11, smallest volume ratio about
+  /// 0.1 instead of 1e-5. The price: tets no longer collapse to let small features go flat, so
+  /// bunny keeps more charts (Uniform 46 corners instead of 36, closed form 54 instead of 40; its
+  /// charts are then exactly flat, where 0.1 left 17 vertices off their planes).
+  double AlignmentBarrierThreshold = 0.3;
 
   /// Chart clean-up: charts below this fraction of the boundary area, or with fewer faces than
   /// MinChartFaceCount, are merged into a neighbour when they are thin along its axis (see
@@ -114,6 +125,23 @@ struct PolycubeParameters
     Direct
   };
   LinearSolverType LinearSolver = LinearSolverType::BlockPcg;
+};
+
+/// One continuation round of ComputePolycube, for diagnostics (PolycubeResult::RoundLog).
+struct PolycubeRound
+{
+  double Weight = 0.0;         ///< w_k
+  double Epsilon = 0.0;        ///< eps_k
+  double Residual = 0.0;       ///< polycube residual at the end of the round
+  double MinVolumeRatio = 0.0; ///< smallest deformed / rest tet volume at the end
+  double Arap = 0.0;           ///< E_arap at the end
+  int Iterations = 0;          ///< Newton iterations
+  int CgIterations = 0;
+  int InfeasibleTrials = 0; ///< line-search halvings because a tet would invert
+  int ArmijoTrials = 0;     ///< line-search halvings for the sufficient decrease
+  double LastStep = 0.0;    ///< step length of the last accepted Newton iteration
+  bool LineSearchFailed = false;
+  double Seconds = 0.0;
 };
 
 /// Output of ComputePolycube, on the mesh after the splits.
@@ -156,6 +184,7 @@ struct PolycubeResult
   Points CutTranslations;
   int CopyCount = 0;
   int Rounds = 0;     ///< continuation rounds (0: the input was already a polycube)
+  std::vector<PolycubeRound> RoundLog; ///< one entry per continuation round
   int Iterations = 0; ///< Newton iterations, all phases
   int PresplitEdgeCount = 0;
   int SplitEdgeCount = 0;      ///< edges split after labelling

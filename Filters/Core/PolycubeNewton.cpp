@@ -544,6 +544,7 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
       trial = x + step * dx;
       if (!this->Energy.IsFeasible(trial.data()))
       {
+        ++stats.InfeasibleTrials;
         continue;
       }
       ++stats.Evaluations;
@@ -556,6 +557,7 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
         accepted = true;
         break;
       }
+      ++stats.ArmijoTrials;
     }
     stats.EvaluateSeconds += SecondsSince(evaluateStart);
     if (!accepted)
@@ -566,6 +568,7 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
     const double previous = terms.Total;
     x = trial;
     ++stats.Iterations;
+    stats.LastStep = step;
 
     evaluateStart = std::chrono::steady_clock::now();
     this->Energy.EvaluateDerivatives(x.data(), terms, gradient, &this->Hessian, &areaGradient);

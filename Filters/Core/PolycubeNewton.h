@@ -98,6 +98,12 @@ struct NewtonStats
   int CgIterations = 0;
   int Evaluations = 0;
   bool LineSearchFailed = false;
+  /// Line-search halvings because the trial inverted a tet or folded a guarded face (the
+  /// barrier's domain), and because the Armijo decrease was not met; step of the last accepted
+  /// iteration.
+  int InfeasibleTrials = 0;
+  int ArmijoTrials = 0;
+  double LastStep = 0.0;
   PolycubeEnergyTerms Terms;  ///< at the returned x
   double SolveSeconds = 0.0;  ///< linear solves, factorisations included
   double FactorSeconds = 0.0; ///< factorisations only

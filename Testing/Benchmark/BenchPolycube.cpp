@@ -3,8 +3,10 @@
 // DESIGN.md §4: wall seconds per phase (median of the runs), polycube residual, corners,
 // inverted tets. Not run by CTest.
 //
-//   BenchPolycube [mesh.mesh = Data/rockerarm.mesh] [runs = 3] [output.mesh]
+//   BenchPolycube [mesh.mesh = Data/rockerarm.mesh] [runs = 3] [output.mesh [rest.mesh]]
 //   PCH_FRAMES=cuts BenchPolycube ...   (the closed form: cuts, frames with transitions)
+//   PCH_ROUNDS=1 BenchPolycube ...      (prints every continuation round)
+//   PCH_FLATTEN=0 ...                   (stop after labelling: the output is the deformed mesh)
 //
 // With an output path, the polycube of the last run is written as MEDIT (tets and boundary
 // triangles).
@@ -71,6 +73,35 @@ int main(int argc, char* argv[])
   if (const char* value = std::getenv("PCH_COLLAPSE_RELABEL_ATTEMPTS"))
   {
     params.CollapseRelabelAttempts = std::atoi(value);
+  }
+  auto overrideDouble = [](const char* name, double& target)
+  {
+    if (const char* value = std::getenv(name))
+    {
+      target = std::atof(value);
+    }
+  };
+  auto overrideInt = [](const char* name, int& target)
+  {
+    if (const char* value = std::getenv(name))
+    {
+      target = std::atoi(value);
+    }
+  };
+  overrideDouble("PCH_ALIGNMENT_WEIGHT", params.AlignmentWeight);
+  overrideDouble("PCH_ALIGNMENT_WEIGHT_GROWTH", params.AlignmentWeightGrowth);
+  overrideDouble("PCH_ALIGNMENT_EPSILON", params.AlignmentEpsilon);
+  overrideDouble("PCH_ALIGNMENT_EPSILON_DECAY", params.AlignmentEpsilonDecay);
+  overrideDouble("PCH_MIN_ALIGNMENT_EPSILON", params.MinAlignmentEpsilon);
+  overrideInt("PCH_MAX_ROUNDS", params.MaxRounds);
+  overrideInt("PCH_ITERATIONS_PER_ROUND", params.IterationsPerRound);
+  overrideDouble("PCH_AREA_WEIGHT", params.AreaWeight);
+  overrideDouble("PCH_BARRIER_WEIGHT", params.BarrierWeight);
+  overrideDouble("PCH_BARRIER_THRESHOLD", params.BarrierThreshold);
+  overrideDouble("PCH_ALIGNMENT_BARRIER_THRESHOLD", params.AlignmentBarrierThreshold);
+  if (const char* value = std::getenv("PCH_FLATTEN"))
+  {
+    params.Flatten = std::atoi(value) != 0;
   }
   // PCH_FRAMES=1: FrameField guidance with the frame field of the uncut mesh; PCH_FRAMES=cuts:
   // the closed form (handle cuts, the frame field with its transitions, the cut mesh).
@@ -174,6 +205,29 @@ int main(int argc, char* argv[])
     result.MaxPlaneDeviation,
     result.FoldedFaceCount,
     result.InitiallyFoldedFaceCount);
+  if (std::getenv("PCH_ROUNDS"))
+  {
+    std::printf("round  weight     eps     residual  minvol    arap      it  cg  infeas armijo "
+                "step     seconds\n");
+    for (size_t k = 0; k < result.RoundLog.size(); ++k)
+    {
+      const PolycubeRound& r = result.RoundLog[k];
+      std::printf("%5zu  %-9.3g  %-6.3g  %-8.3g  %-8.2g  %-8.3g  %2d  %3d %6d %6d  %-8.2g %.2f%s\n",
+        k,
+        r.Weight,
+        r.Epsilon,
+        r.Residual,
+        r.MinVolumeRatio,
+        r.Arap,
+        r.Iterations,
+        r.CgIterations,
+        r.InfeasibleTrials,
+        r.ArmijoTrials,
+        r.LastStep,
+        r.Seconds,
+        r.LineSearchFailed ? "  line search failed" : "");
+    }
+  }
   for (const auto& warning : result.Warnings)
   {
     std::printf("warning: %s\n", warning.c_str());
@@ -186,6 +240,20 @@ int main(int argc, char* argv[])
     out.TetCells = result.Cells;
     out.TriangleCells = result.BoundaryFaces;
     const Status written = WriteMeditFile(argv[3], out);
+    if (!written)
+    {
+      std::fprintf(stderr, "%s\n", written.Message().c_str());
+      return 1;
+    }
+  }
+  if (argc > 4)
+  {
+    // The same mesh at its input positions (split vertices interpolated), for diagnostics.
+    MeditMesh rest;
+    rest.Vertices = result.OriginalPoints;
+    rest.TetCells = result.Cells;
+    rest.TriangleCells = result.BoundaryFaces;
+    const Status written = WriteMeditFile(argv[4], rest);
     if (!written)
     {
       std::fprintf(stderr, "%s\n", written.Message().c_str());
