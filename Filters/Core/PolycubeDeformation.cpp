@@ -8,6 +8,7 @@
 #include "PolycubeEnergy.h"
 #include "PolycubeNewton.h"
 #include "PolycubeRotation.h"
+#include "SparseCholesky.h"
 #include "TetEdgeSplit.h"
 #include "TetGeometry.h"
 
@@ -371,13 +372,14 @@ Status FramePoissonStart(WorkMesh& mesh,
   {
     normal.coeffRef(i, i) += mu;
   }
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-  if (solver.info() != Eigen::Success)
+  SparseCholesky solver;
+  solver.AnalyzePattern(normal);
+  if (!solver.Factorize(normal))
   {
     return Status::Failure("ComputePolycube: the frame-guided Poisson system is singular");
   }
   const Eigen::VectorXd y =
-    solver.solve(bt * (hessian * (rest - reduction.Offset) - gradient));
+    solver.Solve(bt * (hessian * (rest - reduction.Offset) - gradient));
   const Eigen::VectorXd x = reduction.Expand(y);
   const double ratio = energy.MinVolumeRatio(x.data());
   out.InitialRotation.setIdentity();
@@ -899,7 +901,8 @@ Status ComputePolycube(const TetMesh& input,
     }
     adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
     charts = PlaneCharts(mesh, topology.BoundaryFaces, labels);
-    out.LabelingSeconds = SecondsSince(labelStart);
+    // The flattening of an earlier labelling attempt counts as flattening, not as labelling.
+    out.LabelingSeconds = SecondsSince(labelStart) - out.FlatteningSeconds;
     if (!ReportProgress(progress, 0.82))
     {
       return Status::Failure("ComputePolycube: aborted");

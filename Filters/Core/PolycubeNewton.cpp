@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolycubeNewton.h"
 
+#include "SparseCholesky.h"
 #include "ThreadCount.h"
 
 #include <algorithm>
@@ -85,7 +86,8 @@ void SymmetricProduct(const SparseMatrix& m, const Eigen::VectorXd& v, Eigen::Ve
 }
 } // namespace
 
-/// The per-axis diagonal blocks of the Newton matrix, factorised separately (and in parallel).
+/// The per-axis diagonal blocks of the Newton matrix, factorised separately (and in parallel) by
+/// CHOLMOD (SparseCholesky.h).
 class AxisBlockPreconditioner
 {
 public:
@@ -118,9 +120,8 @@ public:
         {
           return;
         }
-        this->Blocks[static_cast<size_t>(a)].diagonal().array() += mu;
-        this->Solvers[static_cast<size_t>(a)].factorize(this->Blocks[static_cast<size_t>(a)]);
-        ok[a] = this->Solvers[static_cast<size_t>(a)].info() == Eigen::Success;
+        ok[a] = this->Solvers[static_cast<size_t>(a)].Factorize(
+          this->Blocks[static_cast<size_t>(a)], mu);
       });
     return ok[0] && ok[1] && ok[2];
   }
@@ -141,7 +142,7 @@ public:
         {
           local(static_cast<Eigen::Index>(i)) = r(vars[i]);
         }
-        local = this->Solvers[static_cast<size_t>(a)].solve(local);
+        local = this->Solvers[static_cast<size_t>(a)].Solve(local);
         for (size_t i = 0; i < vars.size(); ++i)
         {
           z(vars[i]) = local(static_cast<Eigen::Index>(i));
@@ -187,7 +188,7 @@ private:
       this->Blocks[static_cast<size_t>(a)].makeCompressed();
       if (size > 0)
       {
-        this->Solvers[static_cast<size_t>(a)].analyzePattern(this->Blocks[static_cast<size_t>(a)]);
+        this->Solvers[static_cast<size_t>(a)].AnalyzePattern(this->Blocks[static_cast<size_t>(a)]);
       }
     }
     // Entries of a block column come in the same (increasing row) order as in hy's column.
@@ -210,7 +211,7 @@ private:
 
   std::array<std::vector<int>, 3> Variables;
   std::array<SparseMatrix, 3> Blocks;
-  std::array<Eigen::SimplicialLLT<SparseMatrix>, 3> Solvers;
+  std::array<SparseCholesky, 3> Solvers;
   std::vector<std::pair<int, int>> ValueMap;
   Eigen::Index SourceNonZeros = -1;
 };
@@ -384,6 +385,7 @@ private:
 struct PolycubeNewtonSolver::Factorizations
 {
   SparseMatrix Bt;
+  SparseMatrix TrialHessian; ///< the Hessian at the line search's first trial
   SparseMatrix Reduced; ///< B^T H B when the reduction is not the identity
   ReducedHessian ReducedProduct;
   AxisBlockPreconditioner Preconditioner;
@@ -398,6 +400,7 @@ PolycubeNewtonSolver::PolycubeNewtonSolver(const PolycubeEnergy& energy,
   , Hessian(energy.Pattern().ZeroMatrix())
   , Solvers(new Factorizations)
 {
+  this->Solvers->TrialHessian = this->Hessian;
   if (!reduction.IsIdentity)
   {
     this->Solvers->Bt = reduction.B.transpose();
@@ -417,6 +420,8 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
   const int n = static_cast<int>(x.size());
   Eigen::VectorXd gradient(n);
   Eigen::VectorXd areaGradient(n);
+  Eigen::VectorXd trialGradient(n);
+  Eigen::VectorXd trialAreaGradient(n);
   PolycubeEnergyTerms terms;
 
   auto evaluateStart = std::chrono::steady_clock::now();
@@ -431,9 +436,11 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
   stats.Terms = terms;
   const double rankOne = this->Energy.AreaRankOneCoefficient();
 
+  int previousCgIterations = 0; // CG iterations of the previous Newton step
   for (int iteration = 0; iteration < settings.MaxIterations; ++iteration)
   {
     const auto solveStart = std::chrono::steady_clock::now();
+    const int cgBefore = stats.CgIterations;
     const SparseMatrix* hy = &this->Hessian;
     Eigen::VectorXd gy = gradient;
     Eigen::VectorXd ay = areaGradient;
@@ -472,7 +479,8 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
     else
     {
       const auto factorStart = std::chrono::steady_clock::now();
-      if (iteration == 0 || !settings.ReusePreconditioner)
+      if (iteration == 0 || !settings.ReusePreconditioner ||
+        previousCgIterations > settings.RefactorCgIterations)
       {
         if (!solvers.Preconditioner.Factorize(*hy, reduction.VariableAxis, mu))
         {
@@ -523,6 +531,7 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
       }
     }
     stats.SolveSeconds += SecondsSince(solveStart);
+    previousCgIterations = stats.CgIterations - cgBefore;
 
     const double slope = gy.dot(direction);
     if (!(slope < 0.0))
@@ -532,11 +541,16 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
     const Eigen::VectorXd dx =
       reduction.IsIdentity ? direction : Eigen::VectorXd(reduction.B * direction);
     const double descent = gradient.dot(dx);
+    const int evaluationsBefore = stats.Evaluations;
 
-    // Backtracking: first stay positive, then Armijo.
+    // Backtracking: first stay positive, then Armijo. The first trial is evaluated with its
+    // derivatives (it is nearly always accepted, and the next iteration needs them), except
+    // after the last iteration, which needs only the energy.
     evaluateStart = std::chrono::steady_clock::now();
+    const bool another = iteration + 1 < settings.MaxIterations;
     double step = 1.0;
     bool accepted = false;
+    bool derivativesAtTrial = false;
     Eigen::VectorXd trial(n);
     PolycubeEnergyTerms trialTerms;
     for (int attempt = 0; attempt < 40; ++attempt, step *= 0.5)
@@ -548,7 +562,12 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
         continue;
       }
       ++stats.Evaluations;
-      if (!this->Energy.Evaluate(trial.data(), trialTerms))
+      derivativesAtTrial = another && stats.Evaluations == evaluationsBefore + 1;
+      const bool evaluated = derivativesAtTrial
+        ? this->Energy.EvaluateDerivatives(
+            trial.data(), trialTerms, trialGradient, &solvers.TrialHessian, &trialAreaGradient)
+        : this->Energy.Evaluate(trial.data(), trialTerms);
+      if (!evaluated)
       {
         continue;
       }
@@ -559,21 +578,29 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
       }
       ++stats.ArmijoTrials;
     }
-    stats.EvaluateSeconds += SecondsSince(evaluateStart);
     if (!accepted)
     {
+      stats.EvaluateSeconds += SecondsSince(evaluateStart);
       stats.LineSearchFailed = true;
       break;
     }
     const double previous = terms.Total;
-    x = trial;
+    x.swap(trial);
     ++stats.Iterations;
     stats.LastStep = step;
-
-    evaluateStart = std::chrono::steady_clock::now();
-    this->Energy.EvaluateDerivatives(x.data(), terms, gradient, &this->Hessian, &areaGradient);
+    terms = trialTerms;
+    if (derivativesAtTrial)
+    {
+      gradient.swap(trialGradient);
+      areaGradient.swap(trialAreaGradient);
+      this->Hessian.swap(solvers.TrialHessian);
+    }
+    else if (another)
+    {
+      this->Energy.EvaluateDerivatives(x.data(), terms, gradient, &this->Hessian, &areaGradient);
+      ++stats.Evaluations;
+    }
     stats.EvaluateSeconds += SecondsSince(evaluateStart);
-    ++stats.Evaluations;
     stats.Terms = terms;
     if (!ReportProgress(progress, static_cast<double>(iteration + 1) / settings.MaxIterations))
     {

@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   paraview paraview-dev python3-paraview   # ParaView 5.11 and its bundled VTK 9.2
   libopenmpi-dev libdouble-conversion-dev  # required by ParaView's CMake files
-  libceres-dev libeigen3-dev               # Ceres 2.1, Eigen 3.4
+  libceres-dev libeigen3-dev               # Ceres 2.1 (and SuiteSparse's CHOLMOD), Eigen 3.4
   libtet1.5-dev                            # TetGen 1.5 (AGPL-3+)
   cmake ninja-build g++                    # build
   xvfb xauth x11-apps imagemagick          # an X server for rendering, screenshots
