@@ -90,7 +90,8 @@ struct PolycubeParameters
   /// in 14 rounds (Uniform) and 13 (closed form), elephant in 11, smallest volume ratio about
   /// 0.1 instead of 1e-5. The price: tets no longer collapse to let small features go flat, so
   /// bunny keeps more charts (Uniform 46 corners instead of 36, closed form 54 instead of 40; its
-  /// charts are then exactly flat, where 0.1 left 17 vertices off their planes).
+  /// charts are then exactly flat, where 0.1 left 17 vertices off their planes), and kitten's
+  /// closed form has 40 corners instead of 36. The other models keep their corner counts.
   double AlignmentBarrierThreshold = 0.3;
 
   /// Chart clean-up: charts below this fraction of the boundary area, or with fewer faces than
