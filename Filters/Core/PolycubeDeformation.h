@@ -120,8 +120,7 @@ struct PolycubeParameters
   enum class LinearSolverType
   {
     /// CG preconditioned by a Cholesky factorisation of the per-axis blocks of the Newton matrix
-    /// (three scalar-sized systems, factorised at the start of each round and again when CG
-    /// slows down). Rockerarm: about 1.6 s per round.
+    /// (three scalar-sized systems, factorised once per round). Rockerarm: about 1.6 s per round.
     BlockPcg,
     /// Sparse LDL^T of the coupled 3#V system, every iteration. Rockerarm: about 7 s per round.
     Direct

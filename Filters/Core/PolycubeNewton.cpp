@@ -436,11 +436,9 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
   stats.Terms = terms;
   const double rankOne = this->Energy.AreaRankOneCoefficient();
 
-  int previousCgIterations = 0; // CG iterations of the previous Newton step
   for (int iteration = 0; iteration < settings.MaxIterations; ++iteration)
   {
     const auto solveStart = std::chrono::steady_clock::now();
-    const int cgBefore = stats.CgIterations;
     const SparseMatrix* hy = &this->Hessian;
     Eigen::VectorXd gy = gradient;
     Eigen::VectorXd ay = areaGradient;
@@ -479,8 +477,7 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
     else
     {
       const auto factorStart = std::chrono::steady_clock::now();
-      if (iteration == 0 || !settings.ReusePreconditioner ||
-        previousCgIterations > settings.RefactorCgIterations)
+      if (iteration == 0 || !settings.ReusePreconditioner)
       {
         if (!solvers.Preconditioner.Factorize(*hy, reduction.VariableAxis, mu))
         {
@@ -531,7 +528,6 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
       }
     }
     stats.SolveSeconds += SecondsSince(solveStart);
-    previousCgIterations = stats.CgIterations - cgBefore;
 
     const double slope = gy.dot(direction);
     if (!(slope < 0.0))

@@ -83,16 +83,8 @@ struct NewtonSettings
   double GradientTolerance = 1e-10;
   int MaxCgIterations = 40;
   /// Factorise the preconditioner only at the first iteration of a call and reuse it (the
-  /// Hessian changes little within one continuation round; CG absorbs the difference) until
-  /// one step's CG needs more than RefactorCgIterations.
+  /// Hessian changes little within one continuation round; CG absorbs the difference).
   bool ReusePreconditioner = true;
-  /// With ReusePreconditioner: factorise again after a step whose CG needed more than this
-  /// many iterations (the Hessian has moved away from the factorised one: the l1 term's
-  /// curvature changes fast as the normals align, and a capped CG gives a poor step).
-  /// Kitten, Uniform, CPU seconds of BenchPolycube (one thread) / CG iterations / rounds:
-  /// never 71 / 2209 / 15; above 6: 69 / 1246 / 13 (too many factorisations); above 12:
-  /// 54 / 976 / 12; above 20: 52 / 1041 / 11.
-  int RefactorCgIterations = 16;
   /// Inexact Newton: stop CG when the residual is this fraction of the gradient.
   double CgTolerance = 0.1;
   /// Ridge added to the Newton matrix, relative to its mean diagonal (translations are free).
