@@ -706,6 +706,7 @@ Status ComputePolycube(const TetMesh& input,
     energy.Evaluate(x.data(), initial);
     out.Residual = initial.Residual;
     out.Converged = initial.Residual < params.ResidualTolerance;
+    double barrierThreshold = params.BarrierThreshold;
     for (int round = 0; round < rounds && !out.Converged; ++round)
     {
       PolycubeEnergyWeights weights;
@@ -714,7 +715,7 @@ Status ComputePolycube(const TetMesh& input,
       weights.NormalDifference = params.NormalDifferenceWeight;
       weights.Area = params.AreaWeight;
       weights.Barrier = params.BarrierWeight * std::max(1.0, weight);
-      weights.BarrierThreshold = params.AlignmentBarrierThreshold;
+      weights.BarrierThreshold = barrierThreshold;
       finalBarrier = weights.Barrier;
       energy.SetWeights(weights);
       NewtonSettings settings;
@@ -747,7 +748,14 @@ Status ComputePolycube(const TetMesh& input,
       entry.LastStep = stats.LastStep;
       entry.LineSearchFailed = stats.LineSearchFailed;
       entry.Seconds = SecondsSince(roundStart);
+      entry.BarrierThreshold = barrierThreshold;
       out.RoundLog.push_back(entry);
+      // A starved round: widen the barrier for the rest of the continuation.
+      if (stats.InfeasibleTrials >
+        params.StarvedHalvingsPerIteration * std::max(1, stats.Iterations))
+      {
+        barrierThreshold = std::max(barrierThreshold, params.AlignmentBarrierThreshold);
+      }
       if (out.Residual < params.ResidualTolerance)
       {
         out.Converged = true;

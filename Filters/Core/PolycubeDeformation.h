@@ -82,17 +82,22 @@ struct PolycubeParameters
   double BarrierWeight = 1.0;
   /// Volume ratio (deformed / rest) below which the barrier acts (frame fit and flattening).
   double BarrierThreshold = 0.1;
-  /// The same in the continuation rounds. The barrier's Newton model only sees a tet inside its
-  /// zone, so a tet above it can be carried through zero volume by one step. At 0.1, on
-  /// fertility and elephant, thousands of tets ended up between 1e-5 and 0.1 of their volume,
-  /// every Newton step was halved 7-8 times to keep them positive, and the residual stalled
-  /// (0.039 and 0.0155 after 30 rounds). At 0.3 the steps keep their length: fertility converges
-  /// in 14 rounds (Uniform) and 13 (closed form), elephant in 11, smallest volume ratio about
-  /// 0.1 instead of 1e-5. The price: tets no longer collapse to let small features go flat, so
-  /// bunny keeps more charts (Uniform 46 corners instead of 36, closed form 54 instead of 40; its
-  /// charts are then exactly flat, where 0.1 left 17 vertices off their planes), and kitten's
-  /// closed form has 40 corners instead of 36. The other models keep their corner counts.
+  /// The wider barrier zone of a starved continuation. The barrier's Newton model only sees a
+  /// tet inside its zone, so a tet above it can be carried through zero volume by one step. At
+  /// 0.1, on fertility and elephant, thousands of tets ended up between 1e-5 and 0.1 of their
+  /// volume, every Newton step was halved 7-8 times to keep them positive, and the residual
+  /// stalled (0.039 and 0.0155 after 30 rounds). At 0.3 the steps keep their length: fertility
+  /// converges in 14 rounds (Uniform) and 13 (closed form), elephant in 11, smallest volume ratio
+  /// about 0.1 instead of 1e-5. From the first round it would cost corners where 0.1 converges:
+  /// tets no longer collapse to let small features go flat (bunny Uniform 46 instead of 36,
+  /// closed form 54 instead of 40; kitten's closed form 40 instead of 36). So the continuation
+  /// starts at BarrierThreshold and widens the zone to this one for the remaining rounds once a
+  /// round is starved (StarvedHalvingsPerIteration).
   double AlignmentBarrierThreshold = 0.3;
+  /// A continuation round is starved when its line search halved the Newton steps more than this
+  /// many times per iteration on average to keep every tet positive. Measured: rockerarm at most
+  /// 3.8 per iteration in any round, fertility and elephant 7-9 from their fourth round on.
+  double StarvedHalvingsPerIteration = 5.0;
 
   /// Chart clean-up: charts below this fraction of the boundary area, or with fewer faces than
   /// MinChartFaceCount, are merged into a neighbour when they are thin along its axis (see
@@ -133,6 +138,7 @@ struct PolycubeRound
 {
   double Weight = 0.0;         ///< w_k
   double Epsilon = 0.0;        ///< eps_k
+  double BarrierThreshold = 0.0; ///< the barrier's zone in this round (a volume ratio)
   double Residual = 0.0;       ///< polycube residual at the end of the round
   double MinVolumeRatio = 0.0; ///< smallest deformed / rest tet volume at the end
   double Arap = 0.0;           ///< E_arap at the end

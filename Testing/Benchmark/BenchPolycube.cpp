@@ -207,15 +207,17 @@ int main(int argc, char* argv[])
     result.InitiallyFoldedFaceCount);
   if (std::getenv("PCH_ROUNDS"))
   {
-    std::printf("round  weight     eps     residual  minvol    arap      it  cg  infeas armijo "
-                "step     seconds\n");
+    std::printf("round  weight     eps     barrier residual  minvol    arap      it  cg  infeas "
+                "armijo step     seconds\n");
     for (size_t k = 0; k < result.RoundLog.size(); ++k)
     {
       const PolycubeRound& r = result.RoundLog[k];
-      std::printf("%5zu  %-9.3g  %-6.3g  %-8.3g  %-8.2g  %-8.3g  %2d  %3d %6d %6d  %-8.2g %.2f%s\n",
+      std::printf(
+        "%5zu  %-9.3g  %-6.3g  %-6.2g  %-8.3g  %-8.2g  %-8.3g  %2d  %3d %6d %6d  %-8.2g %.2f%s\n",
         k,
         r.Weight,
         r.Epsilon,
+        r.BarrierThreshold,
         r.Residual,
         r.MinVolumeRatio,
         r.Arap,
