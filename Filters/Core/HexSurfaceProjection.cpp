@@ -232,6 +232,10 @@ HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
   {
     this->ChartFaces[surface.FaceChart[f]].push_back(f);
     chartCount = std::max(chartCount, surface.FaceChart[f] + 1);
+    const Eigen::Vector3d a = surface.Vertices.row(surface.Faces(f, 0)).transpose();
+    this->FaceNormal.push_back((surface.Vertices.row(surface.Faces(f, 1)).transpose() - a)
+                                 .cross(surface.Vertices.row(surface.Faces(f, 2)).transpose() - a)
+                                 .normalized());
     for (int e = 0; e < 3; ++e)
     {
       const int a = surface.Faces(f, e);
@@ -283,6 +287,7 @@ HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
   this->VertexKinds.assign(vertexCount, HexVertexKind::Interior);
   this->VertexChart.assign(vertexCount, -1);
   this->VertexCurve.assign(vertexCount, { -1, -1 });
+  this->ReferenceNormal.assign(vertexCount, Eigen::Vector3d::Zero());
   for (size_t v = 0; v < vertexCount; ++v)
   {
     const auto& charts = vertexCharts[v];
@@ -299,6 +304,8 @@ HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
     {
       kind = HexVertexKind::Surface;
       this->VertexChart[v] = charts.front();
+      this->SetReferenceNormal(
+        static_cast<int>(v), mesh.Vertices.row(static_cast<Eigen::Index>(v)).transpose());
       continue;
     }
     kind = charts.size() == 2 && this->FeatureSegments.count({ charts[0], charts[1] })
@@ -314,6 +321,22 @@ HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
       this->Release(static_cast<int>(v), p);
     }
   }
+}
+
+void HexSurfaceProjection::SetReferenceNormal(int v, const Eigen::Vector3d& p)
+{
+  const auto& charts = this->Charts(v);
+  Eigen::Vector3d closest;
+  const int nearest = this->Nearest(
+    p,
+    [&](int f)
+    {
+      return charts.empty() ||
+        std::find(charts.begin(), charts.end(), this->Surface.FaceChart[f]) != charts.end();
+    },
+    closest);
+  this->ReferenceNormal[static_cast<size_t>(v)] =
+    nearest >= 0 ? this->FaceNormal[static_cast<size_t>(nearest)] : Eigen::Vector3d::Zero();
 }
 
 int HexSurfaceProjection::Region(int chart) const
@@ -336,9 +359,10 @@ bool HexSurfaceProjection::Release(int v, const Eigen::Vector3d& p)
   {
     return false;
   }
-  kind = HexVertexKind::Surface;
   // A boundary vertex that knows no chart may go anywhere on the surface.
   this->VertexChart[static_cast<size_t>(v)] = charts.empty() ? -1 : charts.front();
+  this->SetReferenceNormal(v, p);
+  kind = HexVertexKind::Surface;
   ++this->Released;
   for (int chart : charts)
   {
@@ -475,14 +499,20 @@ Eigen::Vector3d HexSurfaceProjection::Project(int v,
     const std::vector<int>& charts = this->Charts(v);
     const int first = this->VertexChart[static_cast<size_t>(v)];
     const int region = first >= 0 ? this->Region(first) : -1;
+    const Eigen::Vector3d& reference = this->ReferenceNormal[static_cast<size_t>(v)];
     const int nearest = this->Nearest(
       p,
       [&](int f)
       {
+        // Beyond its own chart a vertex takes only triangles facing its side of the surface,
+        // never the far side of a thin part.
         const int chart = surface.FaceChart[f];
-        return first < 0 || std::find(charts.begin(), charts.end(), chart) != charts.end() ||
-          ((charts.size() > 1 || this->SoftFace[static_cast<size_t>(f)]) &&
-            this->Region(chart) == region);
+        const bool own = charts.size() == 1 && chart == first;
+        return own ||
+          ((first < 0 ||
+             (charts.size() > 1 || this->SoftFace[static_cast<size_t>(f)]) &&
+               this->Region(chart) == region) &&
+            this->FaceNormal[static_cast<size_t>(f)].dot(reference) > 0.0);
       },
       closest);
     if (direction && nearest >= 0)

@@ -130,6 +130,10 @@ private:
   std::vector<std::pair<int, int>> VertexCurve; ///< #V: chart pair of a Feature vertex
   std::unique_ptr<TriangleGrid> Grid;
   int Released = 0;
+  std::vector<Eigen::Vector3d> FaceNormal; ///< #F unit normals
+  /// #V: the normal of a Surface vertex's nearest triangle when it became one; beyond its own
+  /// chart it only takes triangles facing the same side.
+  std::vector<Eigen::Vector3d> ReferenceNormal;
 
   /// Whether the surface is smooth within `radius` of p across all of `charts`.
   bool Smooth(const Eigen::Vector3d& p,
@@ -140,6 +144,7 @@ private:
   template<class Accept>
   int Nearest(const Eigen::Vector3d& p, const Accept& accept, Eigen::Vector3d& closest) const;
   int Region(int chart) const;
+  void SetReferenceNormal(int v, const Eigen::Vector3d& p);
 };
 
 } // namespace polycubehex

@@ -565,8 +565,10 @@ Status untangleHexMesh(HexMesh& mesh,
       dofs[i] = 2;
     }
   };
-  // Releases the curve and corner vertices of the hexes below ReleaseBelow: where the charts
-  // force a flat or inverted corner, validity wins over the feature.
+  // Releases the corner vertices of the hexes below ReleaseBelow: where the charts force a flat
+  // or inverted corner, quality wins over the corner. Curve vertices stay on their curves (one
+  // released from a crease lets the padding layer pull away from it: bunny's base, 3x the
+  // Hausdorff distance).
   auto release = [&](const Eigen::VectorXd& quality)
   {
     int count = 0;
@@ -579,7 +581,10 @@ Status untangleHexMesh(HexMesh& mesh,
       for (int k = 0; k < 8; ++k)
       {
         const int v = mesh.Cells(h, k);
-        count += projection.Release(v, x.row(v).transpose()) ? 1 : 0;
+        if (projection.Kind(v) == HexVertexKind::Fixed)
+        {
+          count += projection.Release(v, x.row(v).transpose()) ? 1 : 0;
+        }
       }
     }
     return count;

@@ -14,9 +14,9 @@
 // corners and without a cube root). Rounds of L-BFGS alternate with that paper's update of eps
 // from the smallest determinant. During a round a boundary vertex moves in its chart's tangent
 // plane or along its feature curve, and it is projected back onto the input surface after it
-// (HexSurfaceProjection.h); corners of three or more charts stay fixed. Curve and corner vertices
-// of hexes still below ReleaseBelow after a round are released onto the surface (their charts
-// force a flat or inverted corner), and a few last rounds move the interior only. The result is
+// (HexSurfaceProjection.h); corners of three or more charts stay fixed. Corner vertices of hexes
+// still below ReleaseBelow after a round are released onto the surface (their charts force a
+// flat or inverted corner), and a few last rounds move the interior only. The result is
 // kept only when it is no worse than the input: at least its minimum scaled Jacobian and no more
 // inverted hexes (else the best round that is, else the input).
 //
@@ -56,10 +56,11 @@ struct HexUntanglingParameters
   /// where the input's normals about it vary by at most this (degrees, default 20; 0 holds
   /// every such vertex on its curve or in place; HexSurfaceProjection).
   double SoftFeatureAngle = DefaultSoftFeatureAngle;
-  /// After each round, the curve and corner vertices of every hex whose scaled Jacobian is
-  /// below this are released onto the surface (HexSurfaceProjection::Release; default 0.3, a
-  /// value <= -1 releases none): where the charts force a flat or inverted hex corner,
-  /// the feature gives way.
+  /// After each round, the corner vertices (three or more charts) of every hex whose scaled
+  /// Jacobian is below this are released onto the surface (HexSurfaceProjection::Release;
+  /// default 0.3, a value <= -1 releases none): where the charts meet in a way that forces a
+  /// flat or inverted hex corner, the corner gives way. Curve vertices are released only where
+  /// the surface is smooth (SoftFeatureAngle).
   double ReleaseBelow = 0.3;
 };
 
