@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HexUntangling.h"
 
-#include "HexPadding.h"
 #include "HexScaledJacobian.h"
 #include "ThreadCount.h"
 
