@@ -203,6 +203,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.Padding = this->Padding;
   params.Smoothing = this->Smoothing;
   params.SmoothingIterations = this->SmoothingIterations;
+  params.Untangling = this->Untangling;
   params.RoundingCandidates = this->RoundingCandidates;
   auto progress = [this](double fraction)
   {
@@ -271,10 +272,18 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     fields, "ScaledJacobianMinBeforeSmoothing", result.ScaledJacobianMinBeforeSmoothing);
   polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMeanBeforeSmoothing", result.ScaledJacobianMeanBeforeSmoothing);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "ScaledJacobianMinAfterUntangling", result.ScaledJacobianMinAfterUntangling);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "ScaledJacobianMeanAfterUntangling", result.ScaledJacobianMeanAfterUntangling);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "InvertedHexCountAfterUntangling", result.InvertedHexCountAfterUntangling);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "UntanglingSeconds", result.UntanglingSeconds);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "SmoothingSeconds", result.SmoothingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields,
     "ExtractionSeconds",
     result.RoundingSeconds + result.ExtractionSeconds + result.PaddingSeconds +
-      result.SmoothingSeconds);
+      result.UntanglingSeconds + result.SmoothingSeconds);
 
   quadOutput->SetPoints(hexOutput->GetPoints());
   vtkNew<vtkCellArray> quads;
@@ -305,6 +314,7 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Padding: " << this->Padding << "\n";
   os << indent << "Smoothing: " << this->Smoothing << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "Untangling: " << this->Untangling << "\n";
   os << indent << "RoundingCandidates: " << this->RoundingCandidates << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";

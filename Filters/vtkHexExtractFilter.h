@@ -71,6 +71,15 @@ public:
   ///@}
 
   ///@{
+  /// With Smoothing: untangle and optimise all vertex positions at once before the local
+  /// sweeps (a regularised distortion energy minimised by L-BFGS; kept only where it makes the
+  /// mesh no worse). Default on.
+  vtkSetMacro(Untangling, bool);
+  vtkGetMacro(Untangling, bool);
+  vtkBooleanMacro(Untangling, bool);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -103,6 +112,7 @@ protected:
   bool Padding = true;
   bool Smoothing = true;
   int SmoothingIterations = 20;
+  bool Untangling = true;
   int RoundingCandidates = 4;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;

@@ -10,6 +10,7 @@
 #include "HexResolution.h"
 #include "HexScaledJacobian.h"
 #include "HexSmoothing.h"
+#include "HexUntangling.h"
 #include "IntegerRounding.h"
 #include "PolycubeSeams.h"
 
@@ -410,12 +411,17 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     ? GluedVertexCharts(lattice, gluedChart)
     : std::move(lattice.VertexCharts);
 
-  // 5. Smoothing, boundary vertices held on the input surface.
+  // 5. Untangling and smoothing, boundary vertices held on the input surface.
   start = std::chrono::steady_clock::now();
   const Eigen::VectorXd rawQuality = ComputeHexScaledJacobians(mesh);
   result.ScaledJacobianMinBeforeSmoothing = rawQuality.minCoeff();
   result.ScaledJacobianMeanBeforeSmoothing = rawQuality.mean();
-  if (params.Smoothing && params.SmoothingIterations > 0)
+  result.ScaledJacobianMinAfterUntangling = result.ScaledJacobianMinBeforeSmoothing;
+  result.ScaledJacobianMeanAfterUntangling = result.ScaledJacobianMeanBeforeSmoothing;
+  result.InvertedHexCountAfterUntangling = static_cast<int>((rawQuality.array() <= 0.0).count());
+  const bool untangle = params.Smoothing && params.Untangling;
+  const bool smooth = params.Smoothing && params.SmoothingIterations > 0;
+  if (untangle || smooth)
   {
     const bool cut = seams && !seams->Empty();
     const HexSmoothingSurface surface = MakeChartSurface(original,
@@ -423,20 +429,47 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       charts.FaceChart,
       cut ? gluedChart : std::vector<int>(),
       cut ? SeamVertexIdentity(static_cast<int>(original.rows()), seams) : std::vector<int>());
-    HexSmoothingParameters smoothing;
-    smoothing.Iterations = params.SmoothingIterations;
-    HexSmoothingResult smoothed;
-    status = smoothHexMesh(mesh,
-      vertexCharts,
-      surface,
-      smoothing,
-      smoothed,
-      [&progress](double p) { return ReportProgress(progress, 0.65 + 0.3 * p); });
-    if (!status)
+    // One projection for both, so that the smoothing moves the vertices the untangling released
+    // the same way.
+    HexSurfaceProjection projection(surface, vertexCharts, mesh, params.SoftFeatureAngle);
+    if (untangle)
     {
-      return status;
+      HexUntanglingResult untangled;
+      status = untangleHexMesh(mesh,
+        projection,
+        HexUntanglingParameters(),
+        untangled,
+        [&progress](double p) { return ReportProgress(progress, 0.65 + 0.15 * p); });
+      if (!status)
+      {
+        return status;
+      }
+      result.ScaledJacobianMinAfterUntangling = untangled.MinAfter;
+      result.ScaledJacobianMeanAfterUntangling = untangled.MeanAfter;
+      result.InvertedHexCountAfterUntangling = untangled.InvertedAfter;
+      result.UntanglingRounds = untangled.Rounds;
+      result.UntanglingIterations = untangled.Iterations;
+      result.UntanglingKept = untangled.Kept;
     }
-    result.SmoothingSweeps = smoothed.Sweeps;
+    result.UntanglingSeconds = Seconds(start);
+    start = std::chrono::steady_clock::now();
+    if (smooth)
+    {
+      HexSmoothingParameters smoothing;
+      smoothing.Iterations = params.SmoothingIterations;
+      HexSmoothingResult smoothed;
+      status = smoothHexMesh(mesh,
+        projection,
+        smoothing,
+        smoothed,
+        [&progress](double p) { return ReportProgress(progress, 0.8 + 0.15 * p); });
+      if (!status)
+      {
+        return status;
+      }
+      result.SmoothingSweeps = smoothed.Sweeps;
+    }
+    result.ReleasedBoundaryVertexCount = projection.ReleasedCount();
   }
   result.SmoothingSeconds = Seconds(start);
 

@@ -12,6 +12,7 @@
 // charts glued across the seams; HexLatticePadding.h, GlueChartsAcrossSeams).
 #pragma once
 
+#include "HexSurfaceProjection.h"
 #include "MeshTypes.h"
 #include "Status.h"
 
@@ -56,6 +57,13 @@ struct HexExtractionParameters
   bool Smoothing = true;
   /// Smoothing sweeps (default 20, >= 0).
   int SmoothingIterations = 20;
+  /// With Smoothing: before the local sweeps, untangle and optimise all vertex positions at
+  /// once (HexUntangling.h; default on). Kept only where it makes the mesh no worse.
+  bool Untangling = true;
+  /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
+  /// the surface across its charts where the input's normals about it vary by at most this
+  /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).
+  double SoftFeatureAngle = DefaultSoftFeatureAngle;
   /// Integers tried per chart plane in the greedy rounding (default 4, >= 1).
   int RoundingCandidates = 4;
   /// Smallest tet volume ratio (rounded over original polycube) the rounding accepts (default
@@ -103,18 +111,30 @@ struct HexExtractionResult
   int RoundingInvertedTetCount = 0;
   /// What the user should know about a mesh that was made anyway (shown as VTK warnings).
   std::vector<std::string> Warnings;
-  double MaxPlaneShift = 0.0;    ///< largest rounding move of a plane, lattice units
+  double MaxPlaneShift = 0.0; ///< largest rounding move of a plane, lattice units
   double RoundingMinVolumeRatio = 0.0;
   double ScaledJacobianMinBeforeSmoothing = 0.0;
   double ScaledJacobianMeanBeforeSmoothing = 0.0;
   int SmoothingSweeps = 0;
+  /// After the untangling, before the local smoothing (equal to the raw values without it).
+  double ScaledJacobianMinAfterUntangling = 0.0;
+  double ScaledJacobianMeanAfterUntangling = 0.0;
+  int InvertedHexCountAfterUntangling = 0;
+  int UntanglingRounds = 0;
+  int UntanglingIterations = 0;
+  /// False when the untangling did not run or its result was worse than its input (discarded).
+  bool UntanglingKept = false;
+  /// Boundary vertices on a polycube edge or corner released onto the surface (SoftFeatureAngle,
+  /// HexUntanglingParameters::ReleaseBelow).
+  int ReleasedBoundaryVertexCount = 0;
 
   /// Wall seconds per stage.
   double RoundingSeconds = 0.0;
   double ExtractionSeconds = 0.0;
   double PaddingSeconds = 0.0;
-  double SmoothingSeconds = 0.0;
-  double MeasuresSeconds = 0.0; ///< quality, validity and boundary quads of the result
+  double UntanglingSeconds = 0.0;
+  double SmoothingSeconds = 0.0; ///< the local sweeps after the untangling
+  double MeasuresSeconds = 0.0;  ///< quality, validity and boundary quads of the result
 };
 
 /// Extracts an all-hex mesh from a polycube-deformed tet mesh.

@@ -11,17 +11,6 @@ namespace polycubehex
 {
 namespace
 {
-/// For each corner c of the hex, the three corners joined to it by an edge, ordered so that
-/// the triple product of the edge vectors is positive on a positively oriented hex.
-constexpr int CornerEdges[8][3] = { { 1, 3, 4 },
-  { 2, 0, 5 },
-  { 3, 1, 6 },
-  { 0, 2, 7 },
-  { 7, 5, 0 },
-  { 4, 6, 1 },
-  { 5, 7, 2 },
-  { 6, 4, 3 } };
-
 /// Normalised triple product; 0 when a vector has (numerically) zero length.
 double NormalisedDeterminant(const Eigen::Vector3d& a,
   const Eigen::Vector3d& b,
@@ -43,9 +32,9 @@ double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& x)
   {
     const Eigen::Vector3d origin = x.row(c).transpose();
     result = std::min(result,
-      NormalisedDeterminant(x.row(CornerEdges[c][0]).transpose() - origin,
-        x.row(CornerEdges[c][1]).transpose() - origin,
-        x.row(CornerEdges[c][2]).transpose() - origin));
+      NormalisedDeterminant(x.row(HexCornerNeighbours[c][0]).transpose() - origin,
+        x.row(HexCornerNeighbours[c][1]).transpose() - origin,
+        x.row(HexCornerNeighbours[c][2]).transpose() - origin));
   }
   // The Jacobian at the centre uses the three principal axes (differences of opposite faces).
   const Eigen::Vector3d e1 =
@@ -78,6 +67,18 @@ Eigen::VectorXd ComputeHexScaledJacobians(const HexMesh& mesh)
     result[h] = HexScaledJacobian(mesh, static_cast<int>(h));
   }
   return result;
+}
+
+double MeanHexEdgeLength(const HexMesh& mesh)
+{
+  const Eigen::Index hexCount = mesh.Cells.rows();
+  double mean = 0.0;
+  for (Eigen::Index h = 0; h < hexCount; ++h)
+  {
+    mean += (mesh.Vertices.row(mesh.Cells(h, 0)) - mesh.Vertices.row(mesh.Cells(h, 6))).norm() /
+      (std::sqrt(3.0) * static_cast<double>(hexCount));
+  }
+  return mean;
 }
 
 } // namespace polycubehex

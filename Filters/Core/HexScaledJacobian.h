@@ -12,6 +12,17 @@
 namespace polycubehex
 {
 
+/// For each corner c of a hex in VTK's node order, the three corners joined to it by an edge,
+/// ordered so that the triple product of the edge vectors is positive on a positive hex.
+inline constexpr int HexCornerNeighbours[8][3] = { { 1, 3, 4 },
+  { 2, 0, 5 },
+  { 3, 1, 6 },
+  { 0, 2, 7 },
+  { 7, 5, 0 },
+  { 4, 6, 1 },
+  { 5, 7, 2 },
+  { 6, 4, 3 } };
+
 /// Scaled Jacobian of one hex given its 8 corners in VTK's node order. 1 for a box, <= 0 for a
 /// hex inverted or flat at some corner; 0 when an edge has zero length.
 double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& corners);
@@ -22,5 +33,8 @@ double HexScaledJacobian(const HexMesh& mesh, int h);
 /// Scaled Jacobian of every hex.
 /// @return #H scaled Jacobians
 Eigen::VectorXd ComputeHexScaledJacobians(const HexMesh& mesh);
+
+/// The mean over hexes of the diagonal 0-6 over sqrt(3): about one hex edge (0 without hexes).
+double MeanHexEdgeLength(const HexMesh& mesh);
 
 } // namespace polycubehex

@@ -5,9 +5,11 @@
 // around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes.
 // The mesh's minimum scaled Jacobian never decreases. Boundary vertices stay
 // on the input surface: a vertex on one chart slides on that chart's triangles, a vertex on two
-// charts slides along their common feature curve, a vertex on three or more charts is fixed.
+// charts slides along their common feature curve, a vertex on three or more charts is fixed
+// (HexSurfaceProjection.h).
 #pragma once
 
+#include "HexSurfaceProjection.h"
 #include "MeshTypes.h"
 #include "Status.h"
 
@@ -15,29 +17,6 @@
 
 namespace polycubehex
 {
-
-/// The surface boundary vertices stay on: the input's boundary triangles with their charts.
-struct HexSmoothingSurface
-{
-  Points Vertices;            ///< #S by 3 positions (same space as the hex mesh)
-  Triangles Faces;            ///< #F by 3 boundary triangles
-  std::vector<int> FaceChart; ///< #F chart of each triangle
-};
-
-/// The boundary triangles of a tet mesh with their charts, for smoothHexMesh.
-/// @param vertices   #V by 3 positions of the surface (the input's)
-/// @param cells      #T by 4 tets
-/// @param faceChart  #T by 4 chart of local face k (vtkTetra order) or -1 (ChartPlanes::FaceChart)
-/// @param chartIds   #C: the number each chart gets in the surface (its glued chart across the
-///                   seams of a cut polycube, GlueChartsAcrossSeams), or empty for the charts'
-///                   own numbers
-/// @param identity   #V: the vertex each one stands for (the copies across a seam as one,
-///                   SeamVertexIdentity, so that feature curves continue across it), or empty
-HexSmoothingSurface MakeChartSurface(const Points& vertices,
-  const Tets& cells,
-  const Tets& faceChart,
-  const std::vector<int>& chartIds = {},
-  const std::vector<int>& identity = {});
 
 /// Settings of smoothHexMesh.
 struct HexSmoothingParameters
@@ -54,6 +33,10 @@ struct HexSmoothingParameters
   /// the mesh's minimum (default 0.1): inverted hexes scattered at different depths are all
   /// worked on in each sweep, not only the worst few.
   double UntangleBelow = 0.1;
+  /// A boundary vertex on a polycube edge or corner moves on the surface across its charts
+  /// where the input's normals about it vary by at most this (degrees, default 20; 0 holds
+  /// every such vertex on its curve or in place; HexSurfaceProjection).
+  double SoftFeatureAngle = DefaultSoftFeatureAngle;
 };
 
 /// Quality before and after.
@@ -74,6 +57,14 @@ struct HexSmoothingResult
 Status smoothHexMesh(HexMesh& mesh,
   const std::vector<std::vector<int>>& vertexCharts,
   const HexSmoothingSurface& surface,
+  const HexSmoothingParameters& params,
+  HexSmoothingResult& result,
+  const Progress& progress = {});
+
+/// The same with the boundary vertices' kinds and projections given (for instance those the
+/// untangling left, with the vertices it released; params.SoftFeatureAngle is then unused).
+Status smoothHexMesh(HexMesh& mesh,
+  const HexSurfaceProjection& projection,
   const HexSmoothingParameters& params,
   HexSmoothingResult& result,
   const Progress& progress = {});

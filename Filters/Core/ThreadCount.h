@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <thread>
+#include <vector>
 
 namespace polycubehex
 {
@@ -23,6 +24,34 @@ inline unsigned ThreadCount()
     }
   }
   return std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// Runs body(begin, end) over [0, count) in contiguous chunks of at least `grain` items, one
+/// chunk per thread (ThreadCount()). The body must write only outputs of its own items, so the
+/// result does not depend on the thread count.
+template<typename Body>
+void ParallelChunks(int count, int grain, const Body& body)
+{
+  const int threads =
+    std::max(1, std::min(static_cast<int>(ThreadCount()), count / std::max(1, grain)));
+  if (threads == 1)
+  {
+    body(0, count);
+    return;
+  }
+  std::vector<std::thread> workers;
+  const int chunk = (count + threads - 1) / threads;
+  for (int i = 1; i < threads; ++i)
+  {
+    const int begin = std::min(count, i * chunk);
+    const int end = std::min(count, begin + chunk);
+    workers.emplace_back([&body, begin, end]() { body(begin, end); });
+  }
+  body(0, std::min(count, chunk));
+  for (auto& worker : workers)
+  {
+    worker.join();
+  }
 }
 
 } // namespace polycubehex

@@ -66,7 +66,7 @@ int main(int argc, char* argv[])
   params.TargetHexCount = argc > 2 ? std::atoi(argv[2]) : 20000;
   const int runs = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
 
-  std::vector<double> rounding, extraction, padding, smoothing, measures, total;
+  std::vector<double> rounding, extraction, padding, untangling, smoothing, measures, total;
   HexExtractionResult result;
   for (int run = 0; run < runs; ++run)
   {
@@ -79,29 +79,34 @@ int main(int argc, char* argv[])
     rounding.push_back(result.RoundingSeconds);
     extraction.push_back(result.ExtractionSeconds);
     padding.push_back(result.PaddingSeconds);
+    untangling.push_back(result.UntanglingSeconds);
     smoothing.push_back(result.SmoothingSeconds);
     measures.push_back(result.MeasuresSeconds);
     const double sum = result.RoundingSeconds + result.ExtractionSeconds + result.PaddingSeconds +
-      result.SmoothingSeconds + result.MeasuresSeconds;
+      result.UntanglingSeconds + result.SmoothingSeconds + result.MeasuresSeconds;
     total.push_back(sum);
-    std::printf("run %d: rounding %.2f extraction %.2f padding %.2f smoothing %.2f measures %.2f "
-                "total %.2f\n",
+    std::printf("run %d: rounding %.2f extraction %.2f padding %.2f untangling %.2f smoothing %.2f "
+                "measures %.2f total %.2f\n",
       run,
       result.RoundingSeconds,
       result.ExtractionSeconds,
       result.PaddingSeconds,
+      result.UntanglingSeconds,
       result.SmoothingSeconds,
       result.MeasuresSeconds,
       sum);
   }
-  std::printf("median: rounding %.2f extraction %.2f padding %.2f smoothing %.2f measures %.2f total %.2f\n",
+  std::printf("median: rounding %.2f extraction %.2f padding %.2f untangling %.2f smoothing %.2f "
+              "measures %.2f total %.2f\n",
     Median(rounding),
     Median(extraction),
     Median(padding),
+    Median(untangling),
     Median(smoothing),
     Median(measures),
     Median(total));
-  std::printf("hexes %d (padding %d), SJ min %.6f mean %.6f (before smoothing %.6f %.6f), "
+  std::printf("hexes %d (padding %d), SJ min %.6f mean %.6f (raw %.6f %.6f, untangled %.6f %.6f, "
+              "%d inverted, %d rounds, %d iterations, %d released), "
               "inverted %d, sweeps %d, rounding attempts %d, best-effort inverted tets %d\n",
     result.HexCount,
     result.PaddingHexCount,
@@ -109,6 +114,12 @@ int main(int argc, char* argv[])
     result.ScaledJacobianMean,
     result.ScaledJacobianMinBeforeSmoothing,
     result.ScaledJacobianMeanBeforeSmoothing,
+    result.ScaledJacobianMinAfterUntangling,
+    result.ScaledJacobianMeanAfterUntangling,
+    result.InvertedHexCountAfterUntangling,
+    result.UntanglingRounds,
+    result.UntanglingIterations,
+    result.ReleasedBoundaryVertexCount,
     result.InvertedHexCount,
     result.SmoothingSweeps,
     result.RoundingAttempts,

@@ -1,0 +1,550 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "HexSurfaceProjection.h"
+
+#include "DisjointSets.h"
+#include "HexPadding.h"
+#include "HexScaledJacobian.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace polycubehex
+{
+namespace
+{
+Eigen::Vector3d ClosestPointOnSegment(const Eigen::Vector3d& p,
+  const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b)
+{
+  const Eigen::Vector3d ab = b - a;
+  const double length = ab.squaredNorm();
+  const double t = length > 0.0 ? std::clamp((p - a).dot(ab) / length, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
+} // namespace
+
+/// Closest point of triangle (a, b, c) to p, by the Voronoi region of p (vertex, edge or face).
+Eigen::Vector3d ClosestPointOnTriangle(const Eigen::Vector3d& p,
+  const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d ab = b - a;
+  const Eigen::Vector3d ac = c - a;
+  const double d1 = ab.dot(p - a);
+  const double d2 = ac.dot(p - a);
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+    return a;
+  }
+  const double d3 = ab.dot(p - b);
+  const double d4 = ac.dot(p - b);
+  if (d3 >= 0.0 && d4 <= d3)
+  {
+    return b;
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+  {
+    return a + (d1 / (d1 - d3)) * ab;
+  }
+  const double d5 = ab.dot(p - c);
+  const double d6 = ac.dot(p - c);
+  if (d6 >= 0.0 && d5 <= d6)
+  {
+    return c;
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+  {
+    return a + (d2 / (d2 - d6)) * ac;
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+  {
+    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  }
+  const double denominator = va + vb + vc;
+  return a + ab * (vb / denominator) + ac * (vc / denominator);
+}
+
+/// Surface triangles binned in a uniform grid, so that projecting a vertex looks only at the
+/// triangles near it.
+class HexSurfaceProjection::TriangleGrid
+{
+public:
+  TriangleGrid(const Points& vertices, const Triangles& faces, double cellSize)
+  {
+    const Eigen::Vector3d low = vertices.colwise().minCoeff().transpose();
+    const Eigen::Vector3d high = vertices.colwise().maxCoeff().transpose();
+    const Eigen::Vector3d extent = (high - low).cwiseMax(1e-12);
+    // At most about 2^21 cells.
+    this->Cell = std::max(cellSize, std::cbrt(extent.prod() / 2097152.0));
+    this->Origin = low;
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Dims[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / this->Cell)));
+    }
+    std::vector<std::vector<int>> bins(
+      static_cast<size_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2]);
+    for (int f = 0; f < faces.rows(); ++f)
+    {
+      Eigen::Vector3d fl = vertices.row(faces(f, 0)).transpose();
+      Eigen::Vector3d fh = fl;
+      for (int c = 1; c < 3; ++c)
+      {
+        fl = fl.cwiseMin(vertices.row(faces(f, c)).transpose());
+        fh = fh.cwiseMax(vertices.row(faces(f, c)).transpose());
+      }
+      const std::array<int, 3> from = this->CellOf(fl);
+      const std::array<int, 3> to = this->CellOf(fh);
+      for (int i = from[0]; i <= to[0]; ++i)
+      {
+        for (int j = from[1]; j <= to[1]; ++j)
+        {
+          for (int k = from[2]; k <= to[2]; ++k)
+          {
+            bins[this->Index(i, j, k)].push_back(f);
+          }
+        }
+      }
+    }
+    this->Start.assign(bins.size() + 1, 0);
+    for (size_t b = 0; b < bins.size(); ++b)
+    {
+      this->Start[b + 1] = this->Start[b] + static_cast<int>(bins[b].size());
+    }
+    this->Items.reserve(this->Start.back());
+    for (const auto& bin : bins)
+    {
+      this->Items.insert(this->Items.end(), bin.begin(), bin.end());
+    }
+  }
+
+  double CellSize() const { return this->Cell; }
+  int MaxRing() const { return std::max({ this->Dims[0], this->Dims[1], this->Dims[2] }); }
+
+  /// Calls visit(f) for the triangles binned within `ring` cells of p's cell.
+  template<class Visitor>
+  void Visit(const Eigen::Vector3d& p, int ring, Visitor&& visit) const
+  {
+    const std::array<int, 3> centre = this->CellOf(p);
+    for (int i = std::max(0, centre[0] - ring); i <= std::min(this->Dims[0] - 1, centre[0] + ring);
+         ++i)
+    {
+      for (int j = std::max(0, centre[1] - ring);
+           j <= std::min(this->Dims[1] - 1, centre[1] + ring);
+           ++j)
+      {
+        for (int k = std::max(0, centre[2] - ring);
+             k <= std::min(this->Dims[2] - 1, centre[2] + ring);
+             ++k)
+        {
+          const size_t b = this->Index(i, j, k);
+          for (int item = this->Start[b]; item < this->Start[b + 1]; ++item)
+          {
+            visit(this->Items[item]);
+          }
+        }
+      }
+    }
+  }
+
+private:
+  std::array<int, 3> CellOf(const Eigen::Vector3d& p) const
+  {
+    std::array<int, 3> cell;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = std::floor((p[a] - this->Origin[a]) / this->Cell);
+      cell[a] = static_cast<int>(std::clamp(x, 0.0, static_cast<double>(this->Dims[a] - 1)));
+    }
+    return cell;
+  }
+  size_t Index(int i, int j, int k) const
+  {
+    return (static_cast<size_t>(k) * this->Dims[1] + j) * this->Dims[0] + i;
+  }
+
+  Eigen::Vector3d Origin;
+  double Cell = 1.0;
+  std::array<int, 3> Dims = { 1, 1, 1 };
+  std::vector<int> Start;
+  std::vector<int> Items;
+};
+
+HexSmoothingSurface MakeChartSurface(const Points& vertices,
+  const Tets& cells,
+  const Tets& faceChart,
+  const std::vector<int>& chartIds,
+  const std::vector<int>& identity)
+{
+  constexpr int FaceTable[4][3] = { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 2, 1 } };
+  HexSmoothingSurface surface;
+  surface.Vertices = vertices;
+  std::vector<std::array<int, 3>> faces;
+  for (int t = 0; t < cells.rows(); ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int chart = faceChart(t, k);
+      if (chart < 0)
+      {
+        continue;
+      }
+      std::array<int, 3> face;
+      for (int i = 0; i < 3; ++i)
+      {
+        const int v = cells(t, FaceTable[k][i]);
+        face[i] = identity.empty() ? v : identity[static_cast<size_t>(v)];
+      }
+      faces.push_back(face);
+      surface.FaceChart.push_back(chartIds.empty() ? chart : chartIds[static_cast<size_t>(chart)]);
+    }
+  }
+  surface.Faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      surface.Faces(static_cast<Eigen::Index>(f), c) = faces[f][c];
+    }
+  }
+  return surface;
+}
+
+HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
+  const std::vector<std::vector<int>>& vertexCharts,
+  const HexMesh& mesh,
+  double softAngle)
+  : Surface(surface)
+  , VertexCharts(&vertexCharts)
+  , CellSize(MeanHexEdgeLength(mesh))
+{
+  const int faceCount = static_cast<int>(surface.Faces.rows());
+  std::map<std::pair<int, int>, std::vector<int>> edgeFaces;
+  int chartCount = 0;
+  for (int f = 0; f < faceCount; ++f)
+  {
+    this->ChartFaces[surface.FaceChart[f]].push_back(f);
+    chartCount = std::max(chartCount, surface.FaceChart[f] + 1);
+    const Eigen::Vector3d a = surface.Vertices.row(surface.Faces(f, 0)).transpose();
+    this->FaceNormal.push_back((surface.Vertices.row(surface.Faces(f, 1)).transpose() - a)
+                                 .cross(surface.Vertices.row(surface.Faces(f, 2)).transpose() - a)
+                                 .normalized());
+    for (int e = 0; e < 3; ++e)
+    {
+      const int a = surface.Faces(f, e);
+      const int b = surface.Faces(f, (e + 1) % 3);
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(f);
+    }
+  }
+  // The segments of each feature curve (chart pair).
+  for (const auto& entry : edgeFaces)
+  {
+    if (entry.second.size() != 2)
+    {
+      continue;
+    }
+    const int c0 = surface.FaceChart[entry.second[0]];
+    const int c1 = surface.FaceChart[entry.second[1]];
+    if (c0 != c1)
+    {
+      this->FeatureSegments[{ std::min(c0, c1), std::max(c0, c1) }].push_back(
+        { entry.first.first, entry.first.second });
+    }
+  }
+  if (faceCount > 0)
+  {
+    this->Grid = std::make_unique<TriangleGrid>(surface.Vertices, surface.Faces, this->CellSize);
+  }
+  this->ChartParent.resize(static_cast<size_t>(chartCount));
+  for (int c = 0; c < chartCount; ++c)
+  {
+    this->ChartParent[static_cast<size_t>(c)] = c;
+  }
+  this->SoftFace.assign(static_cast<size_t>(faceCount), 0);
+
+  // Kinds. A vertex on two or more charts is released where the surface is smooth about it.
+  const size_t vertexCount = vertexCharts.size();
+  std::vector<bool> onBoundary(vertexCount, false);
+  const Quads quads = ComputeHexBoundaryQuads(mesh);
+  for (Eigen::Index q = 0; q < quads.rows(); ++q)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      if (quads(q, k) < static_cast<int>(vertexCount))
+      {
+        onBoundary[static_cast<size_t>(quads(q, k))] = true;
+      }
+    }
+  }
+  const double cosine = std::cos(softAngle * 3.14159265358979323846 / 180.0);
+  this->VertexKinds.assign(vertexCount, HexVertexKind::Interior);
+  this->VertexChart.assign(vertexCount, -1);
+  this->VertexCurve.assign(vertexCount, { -1, -1 });
+  this->ReferenceNormal.assign(vertexCount, Eigen::Vector3d::Zero());
+  for (size_t v = 0; v < vertexCount; ++v)
+  {
+    const auto& charts = vertexCharts[v];
+    if (!onBoundary[v])
+    {
+      continue;
+    }
+    const bool known = !charts.empty() &&
+      std::all_of(charts.begin(),
+        charts.end(),
+        [this](int chart) { return chart >= 0 && this->ChartFaces.count(chart) > 0; });
+    HexVertexKind& kind = this->VertexKinds[v];
+    if (known && charts.size() == 1)
+    {
+      kind = HexVertexKind::Surface;
+      this->VertexChart[v] = charts.front();
+      this->SetReferenceNormal(
+        static_cast<int>(v), mesh.Vertices.row(static_cast<Eigen::Index>(v)).transpose());
+      continue;
+    }
+    kind = charts.size() == 2 && this->FeatureSegments.count({ charts[0], charts[1] })
+      ? HexVertexKind::Feature
+      : HexVertexKind::Fixed;
+    if (kind == HexVertexKind::Feature)
+    {
+      this->VertexCurve[v] = { charts[0], charts[1] };
+    }
+    const Eigen::Vector3d p = mesh.Vertices.row(static_cast<Eigen::Index>(v)).transpose();
+    if (known && softAngle > 0.0 && this->Smooth(p, charts, this->CellSize, cosine))
+    {
+      this->Release(static_cast<int>(v), p);
+    }
+  }
+}
+
+void HexSurfaceProjection::SetReferenceNormal(int v, const Eigen::Vector3d& p)
+{
+  const auto& charts = this->Charts(v);
+  Eigen::Vector3d closest;
+  const int nearest = this->Nearest(
+    p,
+    [&](int f)
+    {
+      return charts.empty() ||
+        std::find(charts.begin(), charts.end(), this->Surface.FaceChart[f]) != charts.end();
+    },
+    closest);
+  this->ReferenceNormal[static_cast<size_t>(v)] =
+    nearest >= 0 ? this->FaceNormal[static_cast<size_t>(nearest)] : Eigen::Vector3d::Zero();
+}
+
+int HexSurfaceProjection::Region(int chart) const
+{
+  while (this->ChartParent[static_cast<size_t>(chart)] != chart)
+  {
+    chart = this->ChartParent[static_cast<size_t>(chart)];
+  }
+  return chart;
+}
+
+bool HexSurfaceProjection::Release(int v, const Eigen::Vector3d& p)
+{
+  HexVertexKind& kind = this->VertexKinds[static_cast<size_t>(v)];
+  const auto& charts = this->Charts(v);
+  if ((kind != HexVertexKind::Feature && kind != HexVertexKind::Fixed) || !this->Grid ||
+    !std::all_of(charts.begin(),
+      charts.end(),
+      [this](int chart) { return chart >= 0 && this->ChartFaces.count(chart) > 0; }))
+  {
+    return false;
+  }
+  // A boundary vertex that knows no chart may go anywhere on the surface.
+  this->VertexChart[static_cast<size_t>(v)] = charts.empty() ? -1 : charts.front();
+  this->SetReferenceNormal(v, p);
+  kind = HexVertexKind::Surface;
+  ++this->Released;
+  for (int chart : charts)
+  {
+    const int r0 = FindRoot(this->ChartParent, chart);
+    const int r1 = FindRoot(this->ChartParent, charts.front());
+    this->ChartParent[static_cast<size_t>(std::max(r0, r1))] = std::min(r0, r1);
+  }
+  // The soft zone: triangles within three hex edges, where Surface vertices may cross from their
+  // chart to the others of its region.
+  const HexSmoothingSurface& surface = this->Surface;
+  this->Grid->Visit(p,
+    3,
+    [&](int f)
+    {
+      if ((ClosestPointOnTriangle(p,
+             surface.Vertices.row(surface.Faces(f, 0)).transpose(),
+             surface.Vertices.row(surface.Faces(f, 1)).transpose(),
+             surface.Vertices.row(surface.Faces(f, 2)).transpose()) -
+            p)
+            .norm() <= 3.0 * this->CellSize)
+      {
+        this->SoftFace[static_cast<size_t>(f)] = 1;
+      }
+    });
+  return true;
+}
+
+bool HexSurfaceProjection::Smooth(const Eigen::Vector3d& p,
+  const std::vector<int>& charts,
+  double radius,
+  double cosine) const
+{
+  const HexSmoothingSurface& surface = this->Surface;
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<bool> seen(charts.size(), false);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  // The grid's cells are at least `radius` wide, so one ring holds every triangle within it.
+  this->Grid->Visit(p,
+    1,
+    [&](int f)
+    {
+      const auto found = std::find(charts.begin(), charts.end(), surface.FaceChart[f]);
+      if (found == charts.end())
+      {
+        return;
+      }
+      const Eigen::Vector3d a = surface.Vertices.row(surface.Faces(f, 0)).transpose();
+      const Eigen::Vector3d b = surface.Vertices.row(surface.Faces(f, 1)).transpose();
+      const Eigen::Vector3d c = surface.Vertices.row(surface.Faces(f, 2)).transpose();
+      if ((ClosestPointOnTriangle(p, a, b, c) - p).norm() > radius)
+      {
+        return;
+      }
+      const Eigen::Vector3d normal = (b - a).cross(c - a); // twice the area
+      if (normal.norm() > 0.0)
+      {
+        seen[static_cast<size_t>(found - charts.begin())] = true;
+        normals.push_back(normal.normalized());
+        mean += normal;
+      }
+    });
+  if (std::find(seen.begin(), seen.end(), false) != seen.end() || !(mean.norm() > 0.0))
+  {
+    return false;
+  }
+  mean.normalize();
+  return std::all_of(normals.begin(),
+    normals.end(),
+    [&mean, cosine](const Eigen::Vector3d& n) { return n.dot(mean) >= cosine; });
+}
+
+template<class Accept>
+int HexSurfaceProjection::Nearest(const Eigen::Vector3d& p,
+  const Accept& accept,
+  Eigen::Vector3d& closest) const
+{
+  const HexSmoothingSurface& surface = this->Surface;
+  double best = std::numeric_limits<double>::max();
+  int nearest = -1;
+  closest = p;
+  auto consider = [&](int f)
+  {
+    if (!accept(f))
+    {
+      return;
+    }
+    const Eigen::Vector3d x = ClosestPointOnTriangle(p,
+      surface.Vertices.row(surface.Faces(f, 0)).transpose(),
+      surface.Vertices.row(surface.Faces(f, 1)).transpose(),
+      surface.Vertices.row(surface.Faces(f, 2)).transpose());
+    const double d = (x - p).squaredNorm();
+    if (d < best || (d == best && f < nearest))
+    {
+      best = d;
+      closest = x;
+      nearest = f;
+    }
+  };
+  // The nearest triangle found within `ring` cells is the nearest overall once it is closer
+  // than `ring` cells: any closer triangle would have been binned in the searched cells.
+  const TriangleGrid& grid = *this->Grid;
+  for (int ring = 1;; ring *= 2)
+  {
+    grid.Visit(p, ring, consider);
+    if (std::sqrt(best) <= ring * grid.CellSize())
+    {
+      break;
+    }
+    if (ring > grid.MaxRing())
+    {
+      // Far from every accepted triangle: try them all.
+      for (int f = 0; f < static_cast<int>(surface.Faces.rows()); ++f)
+      {
+        consider(f);
+      }
+      break;
+    }
+  }
+  return nearest;
+}
+
+HexSurfaceProjection::~HexSurfaceProjection() = default;
+
+Eigen::Vector3d HexSurfaceProjection::Project(int v,
+  const Eigen::Vector3d& p,
+  Eigen::Vector3d* direction) const
+{
+  const HexSmoothingSurface& surface = this->Surface;
+  Eigen::Vector3d closest = p;
+  Eigen::Vector3d along = Eigen::Vector3d::Zero();
+  const HexVertexKind kind = this->Kind(v);
+  if (kind == HexVertexKind::Surface)
+  {
+    const std::vector<int>& charts = this->Charts(v);
+    const int first = this->VertexChart[static_cast<size_t>(v)];
+    const int region = first >= 0 ? this->Region(first) : -1;
+    const Eigen::Vector3d& reference = this->ReferenceNormal[static_cast<size_t>(v)];
+    const int nearest = this->Nearest(
+      p,
+      [&](int f)
+      {
+        // Beyond its own chart a vertex takes only triangles facing its side of the surface,
+        // never the far side of a thin part.
+        const int chart = surface.FaceChart[f];
+        const bool own = charts.size() == 1 && chart == first;
+        return own ||
+          ((first < 0 ||
+             (charts.size() > 1 || this->SoftFace[static_cast<size_t>(f)]) &&
+               this->Region(chart) == region) &&
+            this->FaceNormal[static_cast<size_t>(f)].dot(reference) > 0.0);
+      },
+      closest);
+    if (direction && nearest >= 0)
+    {
+      const Eigen::Vector3d a = surface.Vertices.row(surface.Faces(nearest, 0)).transpose();
+      along = (surface.Vertices.row(surface.Faces(nearest, 1)).transpose() - a)
+                .cross(surface.Vertices.row(surface.Faces(nearest, 2)).transpose() - a);
+    }
+  }
+  else if (kind == HexVertexKind::Feature)
+  {
+    double best = std::numeric_limits<double>::max();
+    for (const auto& segment : this->FeatureSegments.at(this->VertexCurve[static_cast<size_t>(v)]))
+    {
+      const Eigen::Vector3d a = surface.Vertices.row(segment[0]).transpose();
+      const Eigen::Vector3d b = surface.Vertices.row(segment[1]).transpose();
+      const Eigen::Vector3d x = ClosestPointOnSegment(p, a, b);
+      const double d = (x - p).squaredNorm();
+      if (d < best)
+      {
+        best = d;
+        closest = x;
+        along = b - a;
+      }
+    }
+  }
+  if (direction)
+  {
+    const double length = along.norm();
+    *direction = length > 0.0 ? Eigen::Vector3d(along / length) : Eigen::Vector3d::Zero();
+  }
+  return closest;
+}
+
+} // namespace polycubehex

@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// untangleHexMesh on a cube lattice whose charts are the cube's six faces: a few interior, face
+// and edge vertices pushed through their neighbours are untangled, boundary vertices stay on
+// the cube's surface, corners do not move; a perfect lattice stays perfect; one or two threads
+// give the same bits.
+#include "HexPadding.h"
+#include "HexScaledJacobian.h"
+#include "HexUntangling.h"
+
+#include "TestAssert.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <vector>
+
+using namespace polycubehex;
+
+namespace
+{
+/// An n x n x n lattice of cubes filling [0, 1]^3, VTK node order; vertex (i, j, k) has id
+/// i + (n + 1) (j + (n + 1) k).
+struct Lattice
+{
+  int N = 0;
+  HexMesh Mesh;
+  std::vector<std::vector<int>> VertexCharts; ///< charts 0..5: x = 0, x = 1, y = 0, ... z = 1
+  HexSmoothingSurface Surface;                ///< the cube's boundary, two triangles per quad
+
+  int Id(int i, int j, int k) const { return i + (this->N + 1) * (j + (this->N + 1) * k); }
+};
+
+Lattice MakeLattice(int n)
+{
+  Lattice lattice;
+  lattice.N = n;
+  const int m = n + 1;
+  HexMesh& mesh = lattice.Mesh;
+  mesh.Vertices.resize(m * m * m, 3);
+  lattice.VertexCharts.resize(static_cast<size_t>(m * m * m));
+  for (int k = 0; k < m; ++k)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      for (int i = 0; i < m; ++i)
+      {
+        const int v = lattice.Id(i, j, k);
+        mesh.Vertices.row(v) << static_cast<double>(i) / n, static_cast<double>(j) / n,
+          static_cast<double>(k) / n;
+        const int index[3] = { i, j, k };
+        for (int a = 0; a < 3; ++a)
+        {
+          if (index[a] == 0 || index[a] == n)
+          {
+            lattice.VertexCharts[static_cast<size_t>(v)].push_back(2 * a + (index[a] == n));
+          }
+        }
+      }
+    }
+  }
+  mesh.Cells.resize(n * n * n, 8);
+  int h = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        mesh.Cells.row(h++) << lattice.Id(i, j, k), lattice.Id(i + 1, j, k),
+          lattice.Id(i + 1, j + 1, k), lattice.Id(i, j + 1, k), lattice.Id(i, j, k + 1),
+          lattice.Id(i + 1, j, k + 1), lattice.Id(i + 1, j + 1, k + 1), lattice.Id(i, j + 1, k + 1);
+      }
+    }
+  }
+  // The surface: the boundary quads of the unperturbed lattice, each quad's chart the face its
+  // four vertices share.
+  const Quads quads = ComputeHexBoundaryQuads(mesh);
+  lattice.Surface.Vertices = mesh.Vertices;
+  lattice.Surface.Faces.resize(2 * quads.rows(), 3);
+  for (int q = 0; q < quads.rows(); ++q)
+  {
+    lattice.Surface.Faces.row(2 * q) << quads(q, 0), quads(q, 1), quads(q, 2);
+    lattice.Surface.Faces.row(2 * q + 1) << quads(q, 0), quads(q, 2), quads(q, 3);
+    std::vector<int> common = lattice.VertexCharts[static_cast<size_t>(quads(q, 0))];
+    for (int c = 1; c < 4; ++c)
+    {
+      const auto& other = lattice.VertexCharts[static_cast<size_t>(quads(q, c))];
+      std::vector<int> both;
+      std::set_intersection(
+        common.begin(), common.end(), other.begin(), other.end(), std::back_inserter(both));
+      common.swap(both);
+    }
+    PCH_CHECK(common.size() == 1);
+    lattice.Surface.FaceChart.push_back(common.front());
+    lattice.Surface.FaceChart.push_back(common.front());
+  }
+  return lattice;
+}
+
+/// Largest distance of a vertex from where its charts allow it: on each of its faces' planes,
+/// and inside the cube.
+double SurfaceError(const Lattice& lattice, const Points& x)
+{
+  double error = 0.0;
+  for (int v = 0; v < x.rows(); ++v)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      error = std::max({ error, -x(v, a), x(v, a) - 1.0 });
+    }
+    for (int chart : lattice.VertexCharts[static_cast<size_t>(v)])
+    {
+      const double plane = chart % 2 == 0 ? 0.0 : 1.0;
+      error = std::max(error, std::fabs(x(v, chart / 2) - plane));
+    }
+  }
+  return error;
+}
+
+void TestTangledLattice()
+{
+  Lattice lattice = MakeLattice(6);
+  HexMesh& mesh = lattice.Mesh;
+  const Points start = mesh.Vertices;
+  const double h = 1.0 / 6.0;
+  // Interior vertices pushed through a neighbour, a face vertex through its neighbour within
+  // the face z = 0, an edge vertex along the edge (y = 0, z = 0), a vertex of the face x = 1.
+  mesh.Vertices.row(lattice.Id(2, 2, 2)) += Eigen::RowVector3d(1.5 * h, 0.3 * h, 0.0);
+  mesh.Vertices.row(lattice.Id(4, 3, 2)) += Eigen::RowVector3d(0.0, -1.2 * h, 0.8 * h);
+  mesh.Vertices.row(lattice.Id(3, 3, 1)) += Eigen::RowVector3d(-0.4 * h, 0.0, -1.3 * h);
+  mesh.Vertices.row(lattice.Id(3, 3, 0)) += Eigen::RowVector3d(1.4 * h, 0.2 * h, 0.0);
+  mesh.Vertices.row(lattice.Id(2, 0, 0)) += Eigen::RowVector3d(1.6 * h, 0.0, 0.0);
+  mesh.Vertices.row(lattice.Id(6, 2, 4)) += Eigen::RowVector3d(0.0, 1.3 * h, -0.6 * h);
+  const Eigen::VectorXd tangled = ComputeHexScaledJacobians(mesh);
+  const int invertedBefore = static_cast<int>((tangled.array() <= 0.0).count());
+  std::cout << "tangled lattice: " << invertedBefore << " inverted hexes, SJ min "
+            << tangled.minCoeff() << std::endl;
+  PCH_CHECK(invertedBefore >= 10);
+
+  HexUntanglingResult result;
+  PCH_CHECK(untangleHexMesh(
+    mesh, lattice.VertexCharts, lattice.Surface, HexUntanglingParameters(), result));
+  const Eigen::VectorXd quality = ComputeHexScaledJacobians(mesh);
+  std::cout << "untangled: " << result.InvertedAfter << " inverted, SJ min " << quality.minCoeff()
+            << " mean " << quality.mean() << " in " << result.Rounds << " rounds, "
+            << result.Iterations << " iterations, " << result.ReleasedVertices << " released"
+            << std::endl;
+  PCH_CHECK(result.Kept);
+  PCH_CHECK(result.InvertedBefore == invertedBefore);
+  PCH_CHECK(result.InvertedAfter == 0);
+  PCH_CHECK(result.ReleasedVertices == 0); // the cube's edges and corners are creases
+  PCH_CHECK((quality.array() > 0.0).all());
+  PCH_CHECK(quality.minCoeff() > 0.9);
+  PCH_CHECK_NEAR(result.MinAfter, quality.minCoeff(), 1e-12);
+  PCH_CHECK(SurfaceError(lattice, mesh.Vertices) < 1e-9);
+  for (int i : { 0, 6 })
+  {
+    for (int j : { 0, 6 })
+    {
+      for (int k : { 0, 6 })
+      {
+        const int v = lattice.Id(i, j, k);
+        PCH_CHECK(mesh.Vertices.row(v) == start.row(v));
+      }
+    }
+  }
+}
+
+void TestPerfectLatticeStays()
+{
+  Lattice lattice = MakeLattice(4);
+  const Points start = lattice.Mesh.Vertices;
+  HexUntanglingResult result;
+  PCH_CHECK(untangleHexMesh(
+    lattice.Mesh, lattice.VertexCharts, lattice.Surface, HexUntanglingParameters(), result));
+  const Eigen::VectorXd quality = ComputeHexScaledJacobians(lattice.Mesh);
+  PCH_CHECK_NEAR(quality.minCoeff(), 1.0, 1e-12);
+  PCH_CHECK_NEAR(result.MinAfter, 1.0, 1e-12);
+  PCH_CHECK((lattice.Mesh.Vertices - start).cwiseAbs().maxCoeff() < 1e-9);
+}
+
+/// A lattice large enough for two threads, every free vertex jiggled, a few pushed through.
+void TestThreadsGiveSameBits()
+{
+  Lattice lattice = MakeLattice(17);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jiggle(-0.3 / 17.0, 0.3 / 17.0);
+  HexMesh& mesh = lattice.Mesh;
+  for (int v = 0; v < mesh.Vertices.rows(); ++v)
+  {
+    if (lattice.VertexCharts[static_cast<size_t>(v)].empty())
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        mesh.Vertices(v, a) += jiggle(random);
+      }
+    }
+  }
+  mesh.Vertices.row(lattice.Id(5, 5, 5)) += Eigen::RowVector3d(1.5 / 17.0, 0.0, 0.0);
+  mesh.Vertices.row(lattice.Id(11, 9, 4)) += Eigen::RowVector3d(0.0, 0.0, -1.4 / 17.0);
+  HexUntanglingParameters params;
+  params.MaxRounds = 4;
+  params.IterationsPerRound = 60;
+  HexMesh meshes[2] = { mesh, mesh };
+  HexUntanglingResult results[2];
+  for (int run = 0; run < 2; ++run)
+  {
+    setenv("POLYCUBEHEX_THREADS", run == 0 ? "1" : "2", 1);
+    PCH_CHECK(
+      untangleHexMesh(meshes[run], lattice.VertexCharts, lattice.Surface, params, results[run]));
+  }
+  unsetenv("POLYCUBEHEX_THREADS");
+  std::cout << "17^3 lattice: SJ min " << results[0].MinBefore << " -> " << results[0].MinAfter
+            << ", inverted " << results[0].InvertedBefore << " -> " << results[0].InvertedAfter
+            << std::endl;
+  PCH_CHECK(results[0].InvertedBefore > 0);
+  PCH_CHECK(results[0].InvertedAfter == 0);
+  PCH_CHECK(meshes[0].Vertices == meshes[1].Vertices);
+  PCH_CHECK(results[0].Iterations == results[1].Iterations);
+}
+
+void TestRefusals()
+{
+  Lattice lattice = MakeLattice(2);
+  HexUntanglingResult result;
+  std::vector<std::vector<int>> tooFew(3);
+  PCH_CHECK(
+    !untangleHexMesh(lattice.Mesh, tooFew, lattice.Surface, HexUntanglingParameters(), result));
+  HexUntanglingParameters bad;
+  bad.VolumeWeight = 1.0;
+  PCH_CHECK(!untangleHexMesh(lattice.Mesh, lattice.VertexCharts, lattice.Surface, bad, result));
+}
+} // namespace
+
+int main(int, char*[])
+{
+  TestTangledLattice();
+  TestPerfectLatticeStays();
+  TestThreadsGiveSameBits();
+  TestRefusals();
+  return PCH_TEST_RESULT();
+}
