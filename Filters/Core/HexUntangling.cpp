@@ -596,12 +596,15 @@ Status untangleHexMesh(HexMesh& mesh,
   // The initial eps of Garanzha et al.'s code: a fifth of the worst inversion.
   double eps = std::sqrt(1e-12 + 0.04 * std::pow(std::min(minDet, 0.0), 2));
   double previousFinal = 0.0;
+  Quality plateau; // the best minimum and mean of the valid rounds so far
+  int validRounds = 0;
   Points best;
   Quality bestQuality = before;
   Quality last = before;
   // The main rounds, then a few with the boundary held where the last projection put it, so
   // that the interior settles on the boundary as it finally is.
-  int mainRounds = params.MaxRounds;
+  int mainRounds =
+    before.Inverted == 0 ? std::min(params.MaxRounds, params.MaxRoundsValid) : params.MaxRounds;
   int totalRounds = mainRounds + std::max(0, params.FinalRounds);
   for (int round = 0; round < totalRounds; ++round)
   {
@@ -668,7 +671,21 @@ Status untangleHexMesh(HexMesh& mesh,
       summary.Initial > 0.0 ? (summary.Initial - final) / summary.Initial : 0.0;
     const bool settled = round > 0 && previousFinal - final < params.Tolerance * std::fabs(final);
     previousFinal = final;
-    if (minDet > 0.0 && released == 0 && (decrease < params.Tolerance || settled))
+    // Or once a valid mesh stops getting better: a minimum held by the structure (a padded
+    // concave corner) does not move, and the mean creeps.
+    bool stalled = false;
+    if (last.Inverted == 0)
+    {
+      stalled =
+        validRounds > 0 && last.Min < plateau.Min + 0.01 && last.Mean < plateau.Mean + 0.001;
+      if (validRounds == 0 || last.Min > plateau.Min)
+      {
+        plateau.Min = last.Min;
+      }
+      plateau.Mean = std::max(plateau.Mean, last.Mean);
+      ++validRounds;
+    }
+    if (minDet > 0.0 && released == 0 && (decrease < params.Tolerance || settled || stalled))
     {
       if (polish || params.FinalRounds <= 0)
       {

@@ -40,6 +40,9 @@ struct HexUntanglingParameters
   /// Rounds at most, each one L-BFGS solve for one eps followed by the projection of the
   /// boundary vertices (default 12, >= 0; 0 turns the step off).
   int MaxRounds = 12;
+  /// Rounds at most when no hex of the input is inverted (default 4): then only the quality
+  /// is at stake, and the local smoothing after the untangling does much of it for less.
+  int MaxRoundsValid = 4;
   /// Rounds after those, at most, with the boundary vertices held where the last projection
   /// put them (default 2, >= 0), so that the interior settles on the final boundary.
   int FinalRounds = 2;
