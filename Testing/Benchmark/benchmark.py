@@ -235,12 +235,12 @@ def replace_between_markers(path, text, begin="<!-- benchmark:begin -->",
                             end="<!-- benchmark:end -->"):
     """Puts `text` between the two marker lines of the file at `path` (the README's copy of the
     side-by-side table); leaves the file alone when it has no markers."""
-    with open(path) as f:
+    with open(path, encoding="utf-8") as f:
         content = f.read()
     start, stop = content.find(begin), content.find(end)
     if start < 0 or stop < start:
         return False
-    with open(path, "w") as f:
+    with open(path, "w", encoding="utf-8") as f:
         f.write(content[:start + len(begin)] + "\n" + text + "\n" + content[stop:])
     return True
 
@@ -363,7 +363,7 @@ def main():
         table(paper_rows, paper_columns),
     ]) + "\n"
     print(report)
-    with open(args.output, "w") as out:
+    with open(args.output, "w", encoding="utf-8") as out:
         out.write(report)
     print("wrote", os.path.abspath(args.output), file=sys.stderr)
     if args.readme and os.path.exists(args.readme) and replace_between_markers(
