@@ -420,12 +420,35 @@ int CleanUpCutMeshLabels(const Points& x,
   const PolycubeChartCleanup& settings,
   std::vector<int>& labels)
 {
-  int changed = CleanUpPolycubeCharts(x, faces, adjacency, settings, labels);
   if (copies.empty())
   {
-    return changed;
+    return CleanUpPolycubeCharts(x, faces, adjacency, settings, labels);
   }
   const std::vector<std::array<int, 3>> across = FacesAcrossCuts(faces, adjacency, copies);
+  // The clean-up compares labels as they are, so it sees across a cut's loop only where the
+  // transition is the identity. Across a twisted cut, +Y beside +Y is a mismatch (Pi turns one
+  // of them) that it would take for one chart: after a collapse relabelling on fertility's
+  // 90-degree cut it turned such a chart into the -Y beside it and folded 373 faces.
+  Triangles untwisted = adjacency;
+  for (const auto& pair : across)
+  {
+    if (transitions[static_cast<size_t>(pair[2])] == Eigen::Matrix3i::Identity())
+    {
+      continue;
+    }
+    for (int e = 0; e < 3; ++e)
+    {
+      if (untwisted(pair[0], e) == pair[1])
+      {
+        untwisted(pair[0], e) = -1;
+      }
+      if (untwisted(pair[1], e) == pair[0])
+      {
+        untwisted(pair[1], e) = -1;
+      }
+    }
+  }
+  int changed = CleanUpPolycubeCharts(x, faces, untwisted, settings, labels);
   // No second clean-up: it compares labels across a cut without the transition, and would undo
   // matches across a twisted cut. The matching itself leaves no face across its normal.
   changed += MatchLabelsAcrossCuts(across, x, faces, adjacency, transitions, labels);

@@ -405,13 +405,42 @@ Status FramePoissonStart(WorkMesh& mesh,
 /// Gives the faces that the penalised flattening squeezed below `ratio` of their rest area
 /// (projected on their label's direction) the label of a neighbouring face of another label,
 /// growing inwards from the chart boundaries. Returns the number of faces relabelled.
+/// On a cut mesh a neighbour across a cut's loop lends its label through the cut's transition
+/// (`across`: minus face, plus face, cut): copied as it is, a label across a 90-degree cut is
+/// perpendicular or opposite to the face's normal. A face takes only a label whose direction
+/// its normal in `deformed` (the shape before flattening) does not oppose: on fertility's cut
+/// mesh the growth otherwise gave -Y to 442 faces that faced +Y, and they stayed folded.
 int RelabelCollapsedFaces(const PolycubeEnergy& energy,
   const Eigen::VectorXd& x,
+  const Points& deformed,
   const Triangles& faces,
   const Triangles& adjacency,
+  const std::vector<std::array<int, 3>>& across,
+  const std::vector<Eigen::Matrix3i>& transitions,
   double ratio,
   std::vector<int>& labels)
 {
+  // (face, neighbour) -> the rotation that carries the neighbour's labels to the face's side.
+  std::map<std::pair<int, int>, Eigen::Matrix3i> lend;
+  for (const auto& pair : across)
+  {
+    const Eigen::Matrix3i& pi = transitions[static_cast<size_t>(pair[2])];
+    lend[{ pair[1], pair[0] }] = pi;             // x_plus = Pi x_minus
+    lend[{ pair[0], pair[1] }] = pi.transpose(); // and back
+  }
+  auto lentLabel = [&](int face, int neighbour)
+  {
+    const auto it = lend.find({ face, neighbour });
+    const int label = labels[static_cast<size_t>(neighbour)];
+    return it == lend.end() ? label : TransformLabel(it->second, label);
+  };
+  auto facesAlong = [&](int face, int label)
+  {
+    const Eigen::Vector3d p0 = deformed.row(faces(face, 0)).transpose();
+    const Eigen::Vector3d normal = (deformed.row(faces(face, 1)).transpose() - p0)
+                                     .cross(deformed.row(faces(face, 2)).transpose() - p0);
+    return (label % 2 == 0 ? 1.0 : -1.0) * normal(label / 2) > 0.0;
+  };
   const int faceCount = static_cast<int>(faces.rows());
   std::vector<bool> collapsed(static_cast<size_t>(faceCount), false);
   for (int f = 0; f < faceCount; ++f)
@@ -433,11 +462,12 @@ int RelabelCollapsedFaces(const PolycubeEnergy& energy,
       for (int e = 0; e < 3; ++e)
       {
         const int g = adjacency(f, e);
-        if (g >= 0 && labels[static_cast<size_t>(g)] != labels[static_cast<size_t>(f)] &&
+        if (g >= 0 && lentLabel(f, g) != labels[static_cast<size_t>(f)] &&
+          facesAlong(f, lentLabel(f, g)) &&
           (!collapsed[static_cast<size_t>(g)] ||
             labels[static_cast<size_t>(g)] != original[static_cast<size_t>(g)]))
         {
-          labels[static_cast<size_t>(f)] = labels[static_cast<size_t>(g)];
+          labels[static_cast<size_t>(f)] = lentLabel(f, g);
           collapsed[static_cast<size_t>(f)] = false;
           ++relabelled;
           changed = true;
@@ -1093,8 +1123,12 @@ Status ComputePolycube(const TetMesh& input,
       {
         const int collapsed = RelabelCollapsedFaces(energy,
           x,
+          mesh.X,
           topology.BoundaryFaces,
           adjacency,
+          closedForm ? FacesAcrossCuts(topology.BoundaryFaces, adjacency, mesh.Copies)
+                     : std::vector<std::array<int, 3>>(),
+          mesh.Transitions,
           params.CollapseAreaRatio,
           labels);
         if (collapsed > 0)

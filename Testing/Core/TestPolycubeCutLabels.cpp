@@ -10,6 +10,11 @@
 //  - A loop across the creases (around the middle): a face next to the loop labelled like the
 //    neighbouring side, as a crease crossing the loop inside an edge leaves it, takes its
 //    partner's label back.
+//  - The same loop with the upper half turned by 90 degrees about z (a twisted cut): a small
+//    chart next to the loop that carries its lower partner's label untransformed (as a collapse
+//    relabelling may leave it) is a mismatch, not part of its partner's chart, and the clean-up
+//    gives every face its own side's label back (on fertility, gluing such charts across the
+//    cut folded 373 faces).
 #include "PolycubeCharts.h"
 #include "PolycubeCutMesh.h"
 #include "TetGeometry.h"
@@ -39,7 +44,11 @@ struct OpenedCube
 };
 
 template <typename OnLoop, typename PlusFace>
-OpenedCube OpenCube(int n, OnLoop onLoop, PlusFace plusFace, const Eigen::Vector3d& shift)
+OpenedCube OpenCube(int n,
+  OnLoop onLoop,
+  PlusFace plusFace,
+  const Eigen::Vector3d& shift,
+  const Eigen::Matrix3i& turn = Eigen::Matrix3i::Identity())
 {
   const TetMesh cube = polycubehex_test::CubeGrid(n);
   TetTopology topology;
@@ -74,7 +83,7 @@ OpenedCube OpenCube(int n, OnLoop onLoop, PlusFace plusFace, const Eigen::Vector
       if (copyOf[static_cast<size_t>(v)] < 0)
       {
         copyOf[static_cast<size_t>(v)] = vertexCount + static_cast<int>(extra.size());
-        extra.push_back(cube.Vertices.row(v).transpose() + shift);
+        extra.push_back(turn.cast<double>() * cube.Vertices.row(v).transpose() + shift);
         out.Identity.push_back(v);
         out.Copies.push_back({ v, copyOf[static_cast<size_t>(v)], 0 });
       }
@@ -87,13 +96,14 @@ OpenedCube OpenCube(int n, OnLoop onLoop, PlusFace plusFace, const Eigen::Vector
     out.X.row(v) = cube.Vertices.row(v);
     if (moved[static_cast<size_t>(v)])
     {
-      out.X.row(v) += shift.transpose();
+      out.X.row(v) = (turn.cast<double>() * cube.Vertices.row(v).transpose() + shift).transpose();
     }
   }
   for (size_t i = 0; i < extra.size(); ++i)
   {
     out.X.row(vertexCount + static_cast<Eigen::Index>(i)) = extra[i].transpose();
   }
+  out.Transitions = { turn };
   out.Adjacency = ComputeFaceAdjacency(
     static_cast<int>(out.X.rows()), IdentityFaces(out.Faces, out.Identity));
   return out;
@@ -221,11 +231,72 @@ void TestCreaseCrossingInsideAnEdge()
   PCH_CHECK(Mismatches(cube, labels) == 0);
   PCH_CHECK(labels == normalLabels);
 }
+void TestTwistedCut()
+{
+  // The loop z = 0; the upper half is the plus side, turned by 90 degrees about z: +X -> +Y.
+  Eigen::Matrix3i turn;
+  turn << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  const OpenedCube cube = OpenCube(
+    4,
+    [](const Eigen::Vector3d& p)
+    {
+      return std::abs(p.z()) < 1e-9 && (std::abs(p.x()) > 0.999 || std::abs(p.y()) > 0.999);
+    },
+    [](const Eigen::Vector3d& c) { return c.z() > 0.0; },
+    Eigen::Vector3d(0.0, 0.0, 0.5),
+    turn);
+  const std::vector<int> normalLabels = PolycubeFaceLabels(cube.X, cube.Faces);
+  const auto across = FacesAcrossCuts(cube.Faces, cube.Adjacency, cube.Copies);
+  PCH_CHECK(across.size() == 16);
+  PCH_CHECK(Mismatches(cube, normalLabels) == 0);
+  // A plus face next to the loop, away from the vertical creases, and its plus neighbour away
+  // from the loop take the label of the minus face across the loop, untransformed.
+  std::vector<int> labels = normalLabels;
+  int inner = -1;
+  for (const auto& pair : across)
+  {
+    const int minus = pair[0];
+    const int plus = pair[1];
+    for (int e = 0; e < 3 && inner < 0; ++e)
+    {
+      const int g = cube.Adjacency(plus, e);
+      bool touchesLoop = false;
+      for (const auto& other : across)
+      {
+        touchesLoop = touchesLoop || other[1] == g;
+      }
+      if (g >= 0 && !touchesLoop && normalLabels[static_cast<size_t>(g)] == normalLabels[static_cast<size_t>(plus)])
+      {
+        inner = g;
+        labels[static_cast<size_t>(plus)] = normalLabels[static_cast<size_t>(minus)];
+        labels[static_cast<size_t>(g)] = normalLabels[static_cast<size_t>(minus)];
+      }
+    }
+    if (inner >= 0)
+    {
+      break;
+    }
+  }
+  PCH_CHECK(inner >= 0);
+  PCH_CHECK(Mismatches(cube, labels) >= 1);
+  CleanUpCutMeshLabels(
+    cube.X, cube.Faces, cube.Adjacency, cube.Copies, cube.Transitions, CutMeshCleanup(), labels);
+  int folded = 0;
+  for (size_t f = 0; f < labels.size(); ++f)
+  {
+    folded += labels[f] != normalLabels[f] ? 1 : 0;
+  }
+  std::cout << "twisted cut: " << Mismatches(cube, labels) << " mismatches, " << folded
+            << " faces off their normal's label after the clean-up\n";
+  PCH_CHECK(Mismatches(cube, labels) == 0);
+  PCH_CHECK(folded == 0);
+}
 } // namespace
 
 int main()
 {
   TestLoopAlongCreases();
   TestCreaseCrossingInsideAnEdge();
+  TestTwistedCut();
   return PCH_TEST_RESULT();
 }
