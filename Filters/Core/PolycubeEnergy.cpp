@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 namespace polycubehex
 {
@@ -420,32 +419,8 @@ void BarrierFunction(double d, double d0, double& b, double& db, double& ddb)
 
 namespace
 {
-/// Runs body(begin, end) over [0, count) split into contiguous chunks on a few threads. Each
-/// chunk writes only its own outputs, so the result does not depend on the thread count.
-template<typename Body>
-void ParallelChunks(int count, const Body& body)
-{
-  const unsigned hardware = ThreadCount();
-  const int threads = count < 4096 ? 1 : static_cast<int>(std::min(hardware, 4u));
-  if (threads == 1)
-  {
-    body(0, count);
-    return;
-  }
-  std::vector<std::thread> workers;
-  const int chunk = (count + threads - 1) / threads;
-  for (int i = 1; i < threads; ++i)
-  {
-    const int begin = std::min(count, i * chunk);
-    const int end = std::min(count, begin + chunk);
-    workers.emplace_back([&body, begin, end]() { body(begin, end); });
-  }
-  body(0, std::min(count, chunk));
-  for (auto& worker : workers)
-  {
-    worker.join();
-  }
-}
+/// Tets per thread at least: below two such chunks the threads cost more than they save.
+constexpr int TetsPerThread = 2048;
 
 /// Polar rotation of a J with det J > 0 from the eigen decomposition of J^T J (closed form, much
 /// cheaper than an SVD); falls back to PolarRotation when J is close to singular.
@@ -488,6 +463,7 @@ void PolycubeEnergy::ArapTerm(const double* x,
     gradient && hessian ? static_cast<size_t>(tetCount) : 0);
 
   ParallelChunks(tetCount,
+    TetsPerThread,
     [&](int begin, int end)
     {
       for (int t = begin; t < end; ++t)
