@@ -206,6 +206,9 @@ int main(int argc, char* argv[])
     result.MaxPlaneDeviation,
     result.FoldedFaceCount,
     result.InitiallyFoldedFaceCount);
+  std::printf("faces relabelled: %d by the clean-up, %d because the flattening collapsed them\n",
+    result.RelabelledFaceCount,
+    result.CollapseRelabelledFaceCount);
   if (std::getenv("PCH_ROUNDS"))
   {
     std::printf("round  weight     eps     barrier residual  minvol    arap      it  cg  infeas "
