@@ -94,6 +94,7 @@ int main(int argc, char* argv[])
   overrideDouble("PCH_ALIGNMENT_EPSILON_DECAY", params.AlignmentEpsilonDecay);
   overrideDouble("PCH_MIN_ALIGNMENT_EPSILON", params.MinAlignmentEpsilon);
   overrideInt("PCH_MAX_ROUNDS", params.MaxRounds);
+  overrideDouble("PCH_COLLAPSE_AREA_RATIO", params.CollapseAreaRatio);
   overrideDouble("PCH_MIN_CHART_AREA_FRACTION", params.MinChartAreaFraction);
   overrideInt("PCH_ITERATIONS_PER_ROUND", params.IterationsPerRound);
   overrideDouble("PCH_AREA_WEIGHT", params.AreaWeight);
