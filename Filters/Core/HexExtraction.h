@@ -60,6 +60,10 @@ struct HexExtractionParameters
   /// With Smoothing: before the local sweeps, untangle and optimise all vertex positions at
   /// once (HexUntangling.h; default on). Kept only where it makes the mesh no worse.
   bool Untangling = true;
+  /// With Smoothing: remove one hex of every boundary doublet, two hexes sharing two faces,
+  /// which no positions can make both positive (HexDoublets.h; default on). Leaves a dent one
+  /// padding layer deep per doublet.
+  bool RemoveDoublets = true;
   /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
   /// the surface across its charts where the input's normals about it vary by at most this
   /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).
@@ -127,6 +131,8 @@ struct HexExtractionResult
   /// Boundary vertices on a polycube edge or corner released onto the surface (SoftFeatureAngle,
   /// HexUntanglingParameters::ReleaseBelow).
   int ReleasedBoundaryVertexCount = 0;
+  /// Hexes removed from boundary doublets (HexExtractionParameters::RemoveDoublets).
+  int RemovedDoubletHexCount = 0;
 
   /// Wall seconds per stage.
   double RoundingSeconds = 0.0;
