@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <vector>
 
 namespace polycubehex
@@ -188,6 +189,127 @@ int RemoveBoundaryDoublets(HexMesh& mesh, const Eigen::VectorXd& quality, std::v
   if (removed)
   {
     *removed = std::move(gone);
+  }
+  return count;
+}
+
+int RemoveOverlappingHexes(HexMesh& mesh, const Eigen::VectorXd& quality)
+{
+  const int hexCount = static_cast<int>(mesh.Cells.rows());
+  // Candidates: the hexes of quads used three times or twice with the same orientation (the
+  // orientation of a face: whether its vertex after the smallest is smaller than the one before).
+  std::vector<std::array<int, 6>> faces;
+  faces.reserve(static_cast<size_t>(6 * hexCount));
+  for (int h = 0; h < hexCount; ++h)
+  {
+    for (const auto& face : HexFaces)
+    {
+      std::array<int, 4> q = { mesh.Cells(h, face[0]),
+        mesh.Cells(h, face[1]),
+        mesh.Cells(h, face[2]),
+        mesh.Cells(h, face[3]) };
+      const int first = static_cast<int>(std::min_element(q.begin(), q.end()) - q.begin());
+      const int turn = q[static_cast<size_t>((first + 1) % 4)] < q[static_cast<size_t>((first + 3) % 4)];
+      std::sort(q.begin(), q.end());
+      faces.push_back({ q[0], q[1], q[2], q[3], turn, h });
+    }
+  }
+  std::sort(faces.begin(), faces.end(),
+    [](const std::array<int, 6>& a, const std::array<int, 6>& b)
+    { return std::lexicographical_compare(a.begin(), a.begin() + 4, b.begin(), b.begin() + 4) ||
+        (std::equal(a.begin(), a.begin() + 4, b.begin()) && a[5] < b[5]); });
+  std::vector<int> candidates;
+  for (size_t i = 0; i < faces.size();)
+  {
+    size_t j = i + 1;
+    while (j < faces.size() && std::equal(faces[i].begin(), faces[i].begin() + 4, faces[j].begin()))
+    {
+      ++j;
+    }
+    if (j - i >= 3 || (j - i == 2 && faces[i][4] == faces[i + 1][4]))
+    {
+      for (size_t k = i; k < j; ++k)
+      {
+        candidates.push_back(faces[k][5]);
+      }
+    }
+    i = j;
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  if (candidates.empty() || candidates.size() > 64)
+  {
+    return 0; // none, or a fold too large to mend hex by hex
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+    [&quality](int a, int b) { return quality[a] < quality[b]; });
+
+  auto defects = [](const HexMesh& candidate)
+  {
+    HexMeshValidity validity;
+    if (!checkHexMeshValidity(candidate, validity))
+    {
+      return std::numeric_limits<int>::max();
+    }
+    return validity.OverSharedQuadCount + validity.MisorientedQuadCount +
+      validity.NonManifoldBoundaryEdgeCount + validity.NonManifoldBoundaryVertexCount;
+  };
+  int current = defects(mesh);
+  std::vector<int> uses(static_cast<size_t>(mesh.Vertices.rows()), 0);
+  for (int h = 0; h < hexCount; ++h)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      ++uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+  }
+  std::vector<char> remove(static_cast<size_t>(hexCount), 0);
+  auto without = [&]()
+  {
+    HexMesh kept;
+    kept.Vertices = mesh.Vertices;
+    kept.Cells.resize(hexCount - std::count(remove.begin(), remove.end(), 1), 8);
+    for (int h = 0, row = 0; h < hexCount; ++h)
+    {
+      if (!remove[static_cast<size_t>(h)])
+      {
+        kept.Cells.row(row++) = mesh.Cells.row(h);
+      }
+    }
+    return kept;
+  };
+  for (const int h : candidates)
+  {
+    if (current == 0)
+    {
+      break;
+    }
+    bool orphans = false;
+    for (int k = 0; k < 8; ++k)
+    {
+      orphans = orphans || uses[static_cast<size_t>(mesh.Cells(h, k))] <= 1;
+    }
+    if (orphans)
+    {
+      continue;
+    }
+    remove[static_cast<size_t>(h)] = 1;
+    const int after = defects(without());
+    if (after >= current)
+    {
+      remove[static_cast<size_t>(h)] = 0;
+      continue;
+    }
+    current = after;
+    for (int k = 0; k < 8; ++k)
+    {
+      --uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+  }
+  const int count = static_cast<int>(std::count(remove.begin(), remove.end(), 1));
+  if (count > 0)
+  {
+    mesh.Cells = without().Cells;
   }
   return count;
 }

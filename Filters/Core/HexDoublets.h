@@ -6,7 +6,8 @@
 // both positive. The extraction leaves such pairs at the boundary where the integer rounding
 // left tets inverted (the last, flat hexes of rockerarm and fertility Uniform and of bunny).
 // Removing one hex of the pair leaves a dent of one padding layer but lets the other become a
-// proper hex: its corner at the fold vertex is then a boundary corner.
+// proper hex: its corner at the fold vertex is then a boundary corner. Hexes overlapping others
+// where the extraction folded are removed the same way when that makes the mesh valid.
 #pragma once
 
 #include "MeshTypes.h"
@@ -29,5 +30,12 @@ Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> FindHexDoublets(const Hex
 int RemoveBoundaryDoublets(HexMesh& mesh,
   const Eigen::VectorXd& quality,
   std::vector<int>* removed = nullptr);
+
+/// Removes hexes that overlap others where the extraction folded (a quad used by three hexes, or
+/// two hexes on the same side of their common quad; rockerarm Uniform, next to the tets the
+/// rounding left inverted): greedily, worst `quality` first, each removal kept only when it
+/// lowers the number of combinatorial defects (checkHexMeshValidity) and leaves no vertex
+/// unused. Returns the hexes removed.
+int RemoveOverlappingHexes(HexMesh& mesh, const Eigen::VectorXd& quality);
 
 } // namespace polycubehex

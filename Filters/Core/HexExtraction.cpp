@@ -434,10 +434,13 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     // the same way.
     HexSurfaceProjection projection(surface, vertexCharts, mesh, params.SoftFeatureAngle);
     // After the projection has taken its boundary from the whole mesh: the vertices a removed
-    // doublet hex uncovers were interior and stay free (HexDoublets.h).
+    // hex uncovers were interior and stay free (HexDoublets.h). Overlapping hexes first, as
+    // their quads hide doublets from the face count.
     if (params.RemoveDoublets)
     {
-      result.RemovedDoubletHexCount = RemoveBoundaryDoublets(mesh, rawQuality);
+      result.RemovedDoubletHexCount = RemoveOverlappingHexes(mesh, rawQuality);
+      result.RemovedDoubletHexCount +=
+        RemoveBoundaryDoublets(mesh, ComputeHexScaledJacobians(mesh));
     }
     if (untangle)
     {

@@ -3,7 +3,7 @@
 // through a fold vertex on its bottom (and its copy on the top): the mesh is combinatorially
 // valid, but no positions of the fold vertices make both halves positive; the worse half is
 // removed, the rest stays valid and its split hex can be made a cube; a plain lattice has no
-// doublets and stays as it is.
+// doublets and stays as it is; a copy of one of its cubes is removed again (RemoveOverlappingHexes).
 #include "HexDoublets.h"
 #include "HexMeshValidity.h"
 #include "HexScaledJacobian.h"
@@ -119,9 +119,8 @@ void TestRemoval()
   PCH_CHECK_NEAR(ComputeHexScaledJacobians(mesh).minCoeff(), 1.0, 1e-12);
 }
 
-void TestLatticeUntouched()
+HexMesh MakeCubes()
 {
-  // Two by two by two cubes: every hex pair shares at most one face.
   HexMesh mesh;
   mesh.Vertices.resize(27, 3);
   for (int k = 0; k < 3; ++k)
@@ -148,10 +147,37 @@ void TestLatticeUntouched()
       }
     }
   }
+  return mesh;
+}
+
+void TestLatticeUntouched()
+{
+  // Two by two by two cubes: every hex pair shares at most one face.
+  HexMesh mesh = MakeCubes();
   const Hexes before = mesh.Cells;
   PCH_CHECK(FindHexDoublets(mesh).rows() == 0);
   PCH_CHECK(RemoveBoundaryDoublets(mesh, ComputeHexScaledJacobians(mesh)) == 0);
   PCH_CHECK(mesh.Cells == before);
+  PCH_CHECK(RemoveOverlappingHexes(mesh, ComputeHexScaledJacobians(mesh)) == 0);
+  PCH_CHECK(mesh.Cells == before);
+}
+
+void TestOverlapRemoved()
+{
+  // Two by two by two cubes and a copy of the corner cube, its quads used three times.
+  HexMesh mesh = MakeCubes();
+  const Hexes cubes = mesh.Cells;
+  mesh.Cells.conservativeResize(9, 8);
+  mesh.Cells.row(8) = mesh.Cells.row(7);
+  HexMeshValidity validity;
+  PCH_CHECK(checkHexMeshValidity(mesh, validity));
+  PCH_CHECK(!validity.IsValid());
+  Eigen::VectorXd quality = Eigen::VectorXd::Ones(9);
+  quality[8] = 0.5;
+  PCH_CHECK(RemoveOverlappingHexes(mesh, quality) == 1);
+  PCH_CHECK(mesh.Cells == cubes);
+  PCH_CHECK(checkHexMeshValidity(mesh, validity));
+  PCH_CHECK(validity.IsValid());
 }
 } // namespace
 
@@ -160,5 +186,6 @@ int main(int, char*[])
   TestFoldCannotBePositive();
   TestRemoval();
   TestLatticeUntouched();
+  TestOverlapRemoved();
   return PCH_TEST_RESULT();
 }
