@@ -729,10 +729,11 @@ Status untangleHexMesh(HexMesh& mesh,
     eps = minDet < mu ? 2.0 * std::sqrt(mu * (mu - minDet)) : 1e-10;
   }
 
-  // Keep the last round when it is no worse than the input and has no more inverted hexes than
-  // the best round, else the best round (fewest inverted, then the largest minimum), else the
-  // input. The rounds of a tangled mesh do not decrease the inverted count monotonically.
-  if (NoWorse(last, before) && last.Inverted <= bestQuality.Inverted)
+  // Keep the last round when it is no worse than the input, else the best round that is
+  // (fewest inverted, then the largest minimum), else the input. (Keeping the best round over
+  // a last one with more inverted hexes cost bunny 0.1 of minimum and 4e-3 of Hausdorff
+  // distance after the smoothing, which mends the few the last round leaves.)
+  if (NoWorse(last, before))
   {
     mesh.Vertices = x;
     result.Kept = true;
