@@ -16,9 +16,11 @@
 // plane or along its feature curve, and it is projected back onto the input surface after it
 // (HexSurfaceProjection.h); corners of three or more charts stay fixed. Corner vertices of hexes
 // still below ReleaseBelow after a round are released onto the surface (their charts force a
-// flat or inverted corner), and a few last rounds move the interior only. The result is
-// kept only when it is no worse than the input: at least its minimum scaled Jacobian and no more
-// inverted hexes (else the best round that is, else the input).
+// flat or inverted corner); when hexes are still inverted after the last main round, the curve
+// vertices of those hexes are released too and a few more main rounds run (ReleaseCurvesBelow);
+// a few last rounds move the interior only. The result is kept only when it is no worse than the
+// input: fewer inverted hexes, or as many and at least its minimum scaled Jacobian (else the
+// best round that is, else the input).
 //
 // Every thread count gives the same bits: the hexes' energies and gradients are computed in
 // parallel chunks into per-hex slots, then summed in hex order and gathered per vertex in a
