@@ -278,6 +278,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     fields, "ScaledJacobianMeanAfterUntangling", result.ScaledJacobianMeanAfterUntangling);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "InvertedHexCountAfterUntangling", result.InvertedHexCountAfterUntangling);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "RemovedDoubletHexCount", result.RemovedDoubletHexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "UntanglingSeconds", result.UntanglingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "SmoothingSeconds", result.SmoothingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields,

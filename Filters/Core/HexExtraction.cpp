@@ -3,6 +3,7 @@
 
 #include "MemoryBudget.h"
 
+#include "HexDoublets.h"
 #include "HexLatticeExtraction.h"
 #include "HexLatticePadding.h"
 #include "HexMeshValidity.h"
@@ -432,6 +433,15 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     // One projection for both, so that the smoothing moves the vertices the untangling released
     // the same way.
     HexSurfaceProjection projection(surface, vertexCharts, mesh, params.SoftFeatureAngle);
+    // After the projection has taken its boundary from the whole mesh: the vertices a removed
+    // hex uncovers were interior and stay free (HexDoublets.h). Overlapping hexes first, as
+    // their quads hide doublets from the face count.
+    if (params.RemoveDoublets)
+    {
+      result.RemovedDoubletHexCount = RemoveOverlappingHexes(mesh, rawQuality);
+      result.RemovedDoubletHexCount +=
+        RemoveBoundaryDoublets(mesh, ComputeHexScaledJacobians(mesh));
+    }
     if (untangle)
     {
       HexUntanglingResult untangled;

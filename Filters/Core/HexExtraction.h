@@ -60,6 +60,11 @@ struct HexExtractionParameters
   /// With Smoothing: before the local sweeps, untangle and optimise all vertex positions at
   /// once (HexUntangling.h; default on). Kept only where it makes the mesh no worse.
   bool Untangling = true;
+  /// With Smoothing: remove hexes no positions can make valid (HexDoublets.h; default on): one
+  /// of every boundary doublet (two hexes sharing two faces) and those overlapping others where
+  /// the extraction folded. Each leaves a dent in the boundary (rockerarm Uniform: Hausdorff
+  /// distance about 9 to 18.5 for a valid mesh).
+  bool RemoveDoublets = true;
   /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
   /// the surface across its charts where the input's normals about it vary by at most this
   /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).
@@ -127,6 +132,8 @@ struct HexExtractionResult
   /// Boundary vertices on a polycube edge or corner released onto the surface (SoftFeatureAngle,
   /// HexUntanglingParameters::ReleaseBelow).
   int ReleasedBoundaryVertexCount = 0;
+  /// Hexes removed as doublets or overlaps (HexExtractionParameters::RemoveDoublets).
+  int RemovedDoubletHexCount = 0;
 
   /// Wall seconds per stage.
   double RoundingSeconds = 0.0;

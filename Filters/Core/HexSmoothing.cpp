@@ -128,17 +128,19 @@ Status smoothHexMesh(HexMesh& mesh,
   {
     double Min;
     double Mean;
+    int Inverted; ///< hexes with scaled Jacobian <= 0
   };
   // The last evaluation's values per hex, so that an accepted move need not recompute them.
   std::vector<double> evaluated;
   auto evaluate = [&](int v)
   {
-    Local local{ std::numeric_limits<double>::max(), 0.0 };
+    Local local{ std::numeric_limits<double>::max(), 0.0, 0 };
     evaluated.clear();
     for (int h : hexesOf[v])
     {
       const double q = HexScaledJacobian(mesh, h);
       evaluated.push_back(q);
+      local.Inverted += q <= 0.0 ? 1 : 0;
       local.Min = std::min(local.Min, q);
       local.Mean += q / static_cast<double>(hexesOf[v].size());
     }
@@ -147,18 +149,28 @@ Status smoothHexMesh(HexMesh& mesh,
   // The Laplacian step is taken when it raises the mean quality around the vertex without
   // creating a hex worse than both the vertex's worst and the mesh's worst at the start of the
   // sweep; the pattern search maximises the worst hex around the vertex, then the mean. Either
-  // way the mesh's minimum never decreases.
+  // way the mesh's minimum never decreases. On a tangled mesh (a negative floor) neither may
+  // invert another hex around the vertex: a move that keeps the worst hex but inverts a good
+  // one above the floor trades validity for the mean (rockerarm Uniform gained inverted
+  // interior hexes so).
   double floor = result.MinBefore;
   auto smoother = [&floor](const Local& a, const Local& b)
-  { return a.Mean > b.Mean + 1e-9 && a.Min >= std::min(b.Min, floor); };
+  {
+    return a.Mean > b.Mean + 1e-9 && a.Min >= std::min(b.Min, floor) && a.Inverted <= b.Inverted;
+  };
   auto better = [](const Local& a, const Local& b)
-  { return a.Min > b.Min + 1e-9 || (a.Min >= b.Min && a.Mean > b.Mean + 1e-9); };
+  {
+    return a.Inverted < b.Inverted ||
+      (a.Inverted == b.Inverted &&
+        (a.Min > b.Min + 1e-9 || (a.Min >= b.Min && a.Mean > b.Mean + 1e-9)));
+  };
   // The same from `quality`, which always holds the current value of every hex.
   auto cached = [&](int v)
   {
-    Local local{ std::numeric_limits<double>::max(), 0.0 };
+    Local local{ std::numeric_limits<double>::max(), 0.0, 0 };
     for (int h : hexesOf[v])
     {
+      local.Inverted += quality[h] <= 0.0 ? 1 : 0;
       local.Min = std::min(local.Min, quality[h]);
       local.Mean += quality[h] / static_cast<double>(hexesOf[v].size());
     }

@@ -417,10 +417,23 @@ Quality Measure(const HexMesh& mesh)
   return quality;
 }
 
-/// Not worse than `reference`: no more inverted hexes and no smaller minimum.
+/// Not worse than `reference`: no more inverted hexes and no smaller minimum; or, when the
+/// reference has inverted hexes, fewer of them whatever the minimum (validity first: fertility's
+/// untangling took 143 inverted hexes to 7 and was thrown away for a minimum 0.2 lower).
 bool NoWorse(const Quality& quality, const Quality& reference)
 {
-  return quality.Inverted <= reference.Inverted && quality.Min >= reference.Min;
+  return (quality.Inverted <= reference.Inverted && quality.Min >= reference.Min) ||
+    quality.Inverted < reference.Inverted;
+}
+
+/// Better than `other`: fewer inverted hexes, then a larger minimum, then a larger mean.
+bool Better(const Quality& quality, const Quality& other)
+{
+  if (quality.Inverted != other.Inverted)
+  {
+    return quality.Inverted < other.Inverted;
+  }
+  return quality.Min > other.Min || (quality.Min == other.Min && quality.Mean > other.Mean);
 }
 } // namespace
 
@@ -568,19 +581,21 @@ Status untangleHexMesh(HexMesh& mesh,
   // or inverted corner, quality wins over the corner. Curve vertices stay on their curves (one
   // released from a crease lets the padding layer pull away from it: bunny's base, 3x the
   // Hausdorff distance).
-  auto release = [&](const Eigen::VectorXd& quality)
+  auto release = [&](const Eigen::VectorXd& quality, bool releaseCurves)
   {
     int count = 0;
     for (int h = 0; h < hexCount; ++h)
     {
-      if (quality[h] >= params.ReleaseBelow)
+      const bool curves = releaseCurves && quality[h] < params.ReleaseCurvesBelow;
+      if (quality[h] >= params.ReleaseBelow && !curves)
       {
         continue;
       }
       for (int k = 0; k < 8; ++k)
       {
         const int v = mesh.Cells(h, k);
-        if (projection.Kind(v) == HexVertexKind::Fixed)
+        if ((projection.Kind(v) == HexVertexKind::Fixed && quality[h] < params.ReleaseBelow) ||
+          (projection.Kind(v) == HexVertexKind::Feature && curves))
         {
           count += projection.Release(v, x.row(v).transpose()) ? 1 : 0;
         }
@@ -606,6 +621,7 @@ Status untangleHexMesh(HexMesh& mesh,
   int mainRounds =
     before.Inverted == 0 ? std::min(params.MaxRounds, params.MaxRoundsValid) : params.MaxRounds;
   int totalRounds = mainRounds + std::max(0, params.FinalRounds);
+  bool curvesReleased = false;
   for (int round = 0; round < totalRounds; ++round)
   {
     const bool polish = round >= mainRounds;
@@ -651,14 +667,22 @@ Status untangleHexMesh(HexMesh& mesh,
     last.Min = quality.minCoeff();
     last.Mean = quality.mean();
     last.Inverted = static_cast<int>((quality.array() <= 0.0).count());
-    if (NoWorse(last, before) &&
-      (best.rows() == 0 || last.Min > bestQuality.Min ||
-        (last.Min == bestQuality.Min && last.Mean > bestQuality.Mean)))
+    if (NoWorse(last, before) && (best.rows() == 0 || Better(last, bestQuality)))
     {
       best = x;
       bestQuality = last;
     }
-    const int released = polish ? 0 : release(quality);
+    // The last main round leaving hexes inverted: their curve vertices give way too, and a
+    // few more rounds follow (once).
+    const bool lastChance = !polish && !curvesReleased && last.Inverted > 0 &&
+      round + 1 >= mainRounds && params.ReleaseCurvesBelow > -1.0 && params.CurveRounds > 0;
+    const int released = polish ? 0 : release(quality, lastChance);
+    if (lastChance)
+    {
+      curvesReleased = true;
+      mainRounds = round + 1 + params.CurveRounds;
+      totalRounds = mainRounds + std::max(0, params.FinalRounds);
+    }
 
     // Converged once nothing is inverted, nothing was released and neither this round nor the
     // projection after the last one changed much (the projection undoes a little of every
@@ -705,8 +729,10 @@ Status untangleHexMesh(HexMesh& mesh,
     eps = minDet < mu ? 2.0 * std::sqrt(mu * (mu - minDet)) : 1e-10;
   }
 
-  // Keep the last round when it is no worse than the input, else the best round that is, else
-  // the input.
+  // Keep the last round when it is no worse than the input, else the best round that is
+  // (fewest inverted, then the largest minimum), else the input. (Keeping the best round over
+  // a last one with more inverted hexes cost bunny 0.1 of minimum and 4e-3 of Hausdorff
+  // distance after the smoothing, which mends the few the last round leaves.)
   if (NoWorse(last, before))
   {
     mesh.Vertices = x;

@@ -1,0 +1,317 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "HexDoublets.h"
+
+#include "HexMeshValidity.h"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace polycubehex
+{
+namespace
+{
+/// Every hex face as its sorted vertices and its hex, sorted, so that equal faces are adjacent.
+std::vector<std::array<int, 5>> SortedFaces(const HexMesh& mesh)
+{
+  std::vector<std::array<int, 5>> faces;
+  faces.reserve(static_cast<size_t>(6 * mesh.Cells.rows()));
+  for (int h = 0; h < mesh.Cells.rows(); ++h)
+  {
+    for (const auto& face : HexFaces)
+    {
+      std::array<int, 5> key = { mesh.Cells(h, face[0]),
+        mesh.Cells(h, face[1]),
+        mesh.Cells(h, face[2]),
+        mesh.Cells(h, face[3]),
+        h };
+      std::sort(key.begin(), key.begin() + 4);
+      faces.push_back(key);
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+bool SameQuad(const std::array<int, 5>& a, const std::array<int, 5>& b)
+{
+  return std::equal(a.begin(), a.begin() + 4, b.begin());
+}
+} // namespace
+
+Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> FindHexDoublets(const HexMesh& mesh)
+{
+  const std::vector<std::array<int, 5>> faces = SortedFaces(mesh);
+  // The hex pairs across every interior face; a pair seen twice shares two faces.
+  std::vector<std::array<int, 2>> pairs;
+  for (size_t i = 0; i + 1 < faces.size(); ++i)
+  {
+    if (SameQuad(faces[i], faces[i + 1]) && (i + 2 >= faces.size() || !SameQuad(faces[i], faces[i + 2])))
+    {
+      pairs.push_back({ faces[i][4], faces[i + 1][4] });
+      ++i;
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<std::array<int, 2>> doublets;
+  for (size_t i = 0; i + 1 < pairs.size(); ++i)
+  {
+    if (pairs[i] == pairs[i + 1] && (doublets.empty() || doublets.back() != pairs[i]))
+    {
+      doublets.push_back(pairs[i]);
+    }
+  }
+  Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> result(
+    static_cast<Eigen::Index>(doublets.size()), 2);
+  for (size_t d = 0; d < doublets.size(); ++d)
+  {
+    result.row(static_cast<Eigen::Index>(d)) << doublets[d][0], doublets[d][1];
+  }
+  return result;
+}
+
+int RemoveBoundaryDoublets(HexMesh& mesh, const Eigen::VectorXd& quality, std::vector<int>* removed)
+{
+  if (removed)
+  {
+    removed->clear();
+  }
+  const auto doublets = FindHexDoublets(mesh);
+  if (doublets.rows() == 0)
+  {
+    return 0;
+  }
+  const int hexCount = static_cast<int>(mesh.Cells.rows());
+  std::vector<char> onBoundary(static_cast<size_t>(hexCount), 0);
+  {
+    const std::vector<std::array<int, 5>> faces = SortedFaces(mesh);
+    for (size_t i = 0; i < faces.size(); ++i)
+    {
+      const bool shared = (i > 0 && SameQuad(faces[i], faces[i - 1])) ||
+        (i + 1 < faces.size() && SameQuad(faces[i], faces[i + 1]));
+      if (!shared)
+      {
+        onBoundary[static_cast<size_t>(faces[i][4])] = 1;
+      }
+    }
+  }
+  std::vector<int> uses(static_cast<size_t>(mesh.Vertices.rows()), 0);
+  for (int h = 0; h < hexCount; ++h)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      ++uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+  }
+  // The mesh without the hexes marked in `remove`.
+  std::vector<char> remove(static_cast<size_t>(hexCount), 0);
+  auto without = [&]()
+  {
+    HexMesh kept;
+    kept.Vertices = mesh.Vertices;
+    kept.Cells.resize(hexCount - std::count(remove.begin(), remove.end(), 1), 8);
+    for (int h = 0, row = 0; h < hexCount; ++h)
+    {
+      if (!remove[static_cast<size_t>(h)])
+      {
+        kept.Cells.row(row++) = mesh.Cells.row(h);
+      }
+    }
+    return kept;
+  };
+  // A dent must not pinch the boundary (two fans at a vertex, or an edge of four quads where
+  // two removed hexes touch along it): each removal is kept only if the boundary stays as
+  // manifold as it was, trying the other hex of the pair when the worse one fails.
+  HexMeshValidity before;
+  if (!checkHexMeshValidity(mesh, before))
+  {
+    return 0;
+  }
+  auto pinches = [&](const HexMesh& candidate)
+  {
+    HexMeshValidity after;
+    return !checkHexMeshValidity(candidate, after) ||
+      after.NonManifoldBoundaryEdgeCount > before.NonManifoldBoundaryEdgeCount ||
+      after.NonManifoldBoundaryVertexCount > before.NonManifoldBoundaryVertexCount ||
+      after.OverSharedQuadCount > before.OverSharedQuadCount ||
+      after.MisorientedQuadCount > before.MisorientedQuadCount;
+  };
+  for (Eigen::Index d = 0; d < doublets.rows(); ++d)
+  {
+    const int a = doublets(d, 0);
+    const int b = doublets(d, 1);
+    if (!onBoundary[static_cast<size_t>(a)] || !onBoundary[static_cast<size_t>(b)] ||
+      remove[static_cast<size_t>(a)] || remove[static_cast<size_t>(b)])
+    {
+      continue;
+    }
+    const int worse = quality[a] < quality[b] ? a : b;
+    for (const int victim : { worse, worse == a ? b : a })
+    {
+      bool orphans = false;
+      for (int k = 0; k < 8; ++k)
+      {
+        orphans = orphans || uses[static_cast<size_t>(mesh.Cells(victim, k))] <= 1;
+      }
+      if (orphans)
+      {
+        continue;
+      }
+      remove[static_cast<size_t>(victim)] = 1;
+      if (pinches(without()))
+      {
+        remove[static_cast<size_t>(victim)] = 0;
+        continue;
+      }
+      for (int k = 0; k < 8; ++k)
+      {
+        --uses[static_cast<size_t>(mesh.Cells(victim, k))];
+      }
+      break;
+    }
+  }
+  const int count = static_cast<int>(std::count(remove.begin(), remove.end(), 1));
+  if (count == 0)
+  {
+    return 0;
+  }
+  HexMesh kept = without();
+  std::vector<int> gone;
+  for (int h = 0; h < hexCount; ++h)
+  {
+    if (remove[static_cast<size_t>(h)])
+    {
+      gone.push_back(h);
+    }
+  }
+  mesh.Cells = std::move(kept.Cells);
+  if (removed)
+  {
+    *removed = std::move(gone);
+  }
+  return count;
+}
+
+int RemoveOverlappingHexes(HexMesh& mesh, const Eigen::VectorXd& quality)
+{
+  const int hexCount = static_cast<int>(mesh.Cells.rows());
+  // Candidates: the hexes of quads used three times or twice with the same orientation (the
+  // orientation of a face: whether its vertex after the smallest is smaller than the one before).
+  std::vector<std::array<int, 6>> faces;
+  faces.reserve(static_cast<size_t>(6 * hexCount));
+  for (int h = 0; h < hexCount; ++h)
+  {
+    for (const auto& face : HexFaces)
+    {
+      std::array<int, 4> q = { mesh.Cells(h, face[0]),
+        mesh.Cells(h, face[1]),
+        mesh.Cells(h, face[2]),
+        mesh.Cells(h, face[3]) };
+      const int first = static_cast<int>(std::min_element(q.begin(), q.end()) - q.begin());
+      const int turn = q[static_cast<size_t>((first + 1) % 4)] < q[static_cast<size_t>((first + 3) % 4)];
+      std::sort(q.begin(), q.end());
+      faces.push_back({ q[0], q[1], q[2], q[3], turn, h });
+    }
+  }
+  std::sort(faces.begin(), faces.end(),
+    [](const std::array<int, 6>& a, const std::array<int, 6>& b)
+    { return std::lexicographical_compare(a.begin(), a.begin() + 4, b.begin(), b.begin() + 4) ||
+        (std::equal(a.begin(), a.begin() + 4, b.begin()) && a[5] < b[5]); });
+  std::vector<int> candidates;
+  for (size_t i = 0; i < faces.size();)
+  {
+    size_t j = i + 1;
+    while (j < faces.size() && std::equal(faces[i].begin(), faces[i].begin() + 4, faces[j].begin()))
+    {
+      ++j;
+    }
+    if (j - i >= 3 || (j - i == 2 && faces[i][4] == faces[i + 1][4]))
+    {
+      for (size_t k = i; k < j; ++k)
+      {
+        candidates.push_back(faces[k][5]);
+      }
+    }
+    i = j;
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  if (candidates.empty() || candidates.size() > 64)
+  {
+    return 0; // none, or a fold too large to mend hex by hex
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+    [&quality](int a, int b) { return quality[a] < quality[b]; });
+
+  auto defects = [](const HexMesh& candidate)
+  {
+    HexMeshValidity validity;
+    if (!checkHexMeshValidity(candidate, validity))
+    {
+      return std::numeric_limits<int>::max();
+    }
+    return validity.OverSharedQuadCount + validity.MisorientedQuadCount +
+      validity.NonManifoldBoundaryEdgeCount + validity.NonManifoldBoundaryVertexCount;
+  };
+  int current = defects(mesh);
+  std::vector<int> uses(static_cast<size_t>(mesh.Vertices.rows()), 0);
+  for (int h = 0; h < hexCount; ++h)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      ++uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+  }
+  std::vector<char> remove(static_cast<size_t>(hexCount), 0);
+  auto without = [&]()
+  {
+    HexMesh kept;
+    kept.Vertices = mesh.Vertices;
+    kept.Cells.resize(hexCount - std::count(remove.begin(), remove.end(), 1), 8);
+    for (int h = 0, row = 0; h < hexCount; ++h)
+    {
+      if (!remove[static_cast<size_t>(h)])
+      {
+        kept.Cells.row(row++) = mesh.Cells.row(h);
+      }
+    }
+    return kept;
+  };
+  for (const int h : candidates)
+  {
+    if (current == 0)
+    {
+      break;
+    }
+    bool orphans = false;
+    for (int k = 0; k < 8; ++k)
+    {
+      orphans = orphans || uses[static_cast<size_t>(mesh.Cells(h, k))] <= 1;
+    }
+    if (orphans)
+    {
+      continue;
+    }
+    remove[static_cast<size_t>(h)] = 1;
+    const int after = defects(without());
+    if (after >= current)
+    {
+      remove[static_cast<size_t>(h)] = 0;
+      continue;
+    }
+    current = after;
+    for (int k = 0; k < 8; ++k)
+    {
+      --uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+  }
+  const int count = static_cast<int>(std::count(remove.begin(), remove.end(), 1));
+  if (count > 0)
+  {
+    mesh.Cells = without().Cells;
+  }
+  return count;
+}
+
+} // namespace polycubehex
