@@ -38,6 +38,36 @@ bool SameQuad(const std::array<int, 5>& a, const std::array<int, 5>& b)
 {
   return std::equal(a.begin(), a.begin() + 4, b.begin());
 }
+
+/// How many hexes use each vertex.
+std::vector<int> VertexUses(const HexMesh& mesh)
+{
+  std::vector<int> uses(static_cast<size_t>(mesh.Vertices.rows()), 0);
+  for (Eigen::Index h = 0; h < mesh.Cells.rows(); ++h)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      ++uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+  }
+  return uses;
+}
+
+/// The mesh without the hexes marked in `remove` (vertices unchanged).
+HexMesh WithoutHexes(const HexMesh& mesh, const std::vector<char>& remove)
+{
+  HexMesh kept;
+  kept.Vertices = mesh.Vertices;
+  kept.Cells.resize(mesh.Cells.rows() - std::count(remove.begin(), remove.end(), 1), 8);
+  for (Eigen::Index h = 0, row = 0; h < mesh.Cells.rows(); ++h)
+  {
+    if (!remove[static_cast<size_t>(h)])
+    {
+      kept.Cells.row(row++) = mesh.Cells.row(h);
+    }
+  }
+  return kept;
+}
 } // namespace
 
 Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> FindHexDoublets(const HexMesh& mesh)
@@ -96,30 +126,10 @@ int RemoveBoundaryDoublets(HexMesh& mesh, const Eigen::VectorXd& quality, std::v
       }
     }
   }
-  std::vector<int> uses(static_cast<size_t>(mesh.Vertices.rows()), 0);
-  for (int h = 0; h < hexCount; ++h)
-  {
-    for (int k = 0; k < 8; ++k)
-    {
-      ++uses[static_cast<size_t>(mesh.Cells(h, k))];
-    }
-  }
+  std::vector<int> uses = VertexUses(mesh);
   // The mesh without the hexes marked in `remove`.
   std::vector<char> remove(static_cast<size_t>(hexCount), 0);
-  auto without = [&]()
-  {
-    HexMesh kept;
-    kept.Vertices = mesh.Vertices;
-    kept.Cells.resize(hexCount - std::count(remove.begin(), remove.end(), 1), 8);
-    for (int h = 0, row = 0; h < hexCount; ++h)
-    {
-      if (!remove[static_cast<size_t>(h)])
-      {
-        kept.Cells.row(row++) = mesh.Cells.row(h);
-      }
-    }
-    return kept;
-  };
+  auto without = [&]() { return WithoutHexes(mesh, remove); };
   // A dent must not pinch the boundary (two fans at a vertex, or an edge of four quads where
   // two removed hexes touch along it): each removal is kept only if the boundary stays as
   // manifold as it was, trying the other hex of the pair when the worse one fails.
@@ -255,29 +265,9 @@ int RemoveOverlappingHexes(HexMesh& mesh, const Eigen::VectorXd& quality)
       validity.NonManifoldBoundaryEdgeCount + validity.NonManifoldBoundaryVertexCount;
   };
   int current = defects(mesh);
-  std::vector<int> uses(static_cast<size_t>(mesh.Vertices.rows()), 0);
-  for (int h = 0; h < hexCount; ++h)
-  {
-    for (int k = 0; k < 8; ++k)
-    {
-      ++uses[static_cast<size_t>(mesh.Cells(h, k))];
-    }
-  }
+  std::vector<int> uses = VertexUses(mesh);
   std::vector<char> remove(static_cast<size_t>(hexCount), 0);
-  auto without = [&]()
-  {
-    HexMesh kept;
-    kept.Vertices = mesh.Vertices;
-    kept.Cells.resize(hexCount - std::count(remove.begin(), remove.end(), 1), 8);
-    for (int h = 0, row = 0; h < hexCount; ++h)
-    {
-      if (!remove[static_cast<size_t>(h)])
-      {
-        kept.Cells.row(row++) = mesh.Cells.row(h);
-      }
-    }
-    return kept;
-  };
+  auto without = [&]() { return WithoutHexes(mesh, remove); };
   for (const int h : candidates)
   {
     if (current == 0)
