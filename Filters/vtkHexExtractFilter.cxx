@@ -204,6 +204,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.Smoothing = this->Smoothing;
   params.SmoothingIterations = this->SmoothingIterations;
   params.Untangling = this->Untangling;
+  params.MapSmoothing = this->MapSmoothing;
   params.RoundingCandidates = this->RoundingCandidates;
   auto progress = [this](double fraction)
   {
@@ -268,6 +269,11 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   }
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RoundingInvertedTetCount", result.RoundingInvertedTetCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MapEnergyBefore", result.MapEnergyBefore);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MapEnergyAfter", result.MapEnergyAfter);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "MapSmoothingIterations", result.MapSmoothingIterations);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "RoundingSeconds", result.RoundingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMinBeforeSmoothing", result.ScaledJacobianMinBeforeSmoothing);
   polycubehex::SetFieldValue<vtkDoubleArray>(

@@ -80,6 +80,16 @@ public:
   ///@}
 
   ///@{
+  /// Smooth the rounded polycube map before the hexes are extracted: every coordinate the
+  /// chart planes and cuts leave free minimises a foldover-free distortion energy of the map
+  /// (the hexes are its image of unit cubes). Not in the paper. Default off: it helps the raw
+  /// extraction on some models, not the smoothed meshes (see HexExtraction.h).
+  vtkSetMacro(MapSmoothing, bool);
+  vtkGetMacro(MapSmoothing, bool);
+  vtkBooleanMacro(MapSmoothing, bool);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -113,6 +123,7 @@ protected:
   bool Smoothing = true;
   int SmoothingIterations = 20;
   bool Untangling = true;
+  bool MapSmoothing = false;
   int RoundingCandidates = 4;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;

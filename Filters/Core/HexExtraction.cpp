@@ -255,6 +255,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   IntegerRoundingParameters rounding;
   rounding.CandidateCount = params.RoundingCandidates;
   rounding.MinimumVolumeRatio = params.MinimumVolumeRatio;
+  rounding.SmoothMap = params.MapSmoothing;
   IntegerRoundingResult rounded;
   const double factors[] = { 1.0, 1.01, 0.99, 1.02, 0.98, 1.03, 0.97 };
   const int attempts = std::max(1, std::min(params.RoundingAttempts, 7));
@@ -347,6 +348,9 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   result.RoundingFallbackCount = rounded.FallbackCount;
   result.MaxPlaneShift = rounded.MaxPlaneShift;
   result.RoundingMinVolumeRatio = rounded.MinVolumeRatio;
+  result.MapEnergyBefore = rounded.MapSmoothing.EnergyBefore;
+  result.MapEnergyAfter = rounded.MapSmoothing.EnergyAfter;
+  result.MapSmoothingIterations = rounded.MapSmoothing.Iterations;
   result.RoundingSeconds = Seconds(start);
 
   // The seams in lattice frames (integer translations), or none for a uniform polycube.

@@ -1168,6 +1168,11 @@ double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target) c
   return ratio;
 }
 
+const Eigen::SparseMatrix<double>& PolycubePlaneSolver::FreeBasis() const
+{
+  return this->Data->Bf;
+}
+
 double PolycubePlaneSolver::MinVolumeRatio(const Points& positions) const
 {
   const Impl& d = *this->Data;
@@ -1688,10 +1693,34 @@ Status roundPolycubePlanes(const Points& rest,
                                        : status.Message();
     }
   }
-  result.InvertedTetCount = 0;
-  for (int t = 0; t < static_cast<int>(cells.rows()); ++t)
+  // The rounded map, smoothed where the planes and cuts leave it free (the rounding keeps the
+  // deformation's own distortion, and the hexes are that map's image of unit cubes).
+  PolycubeMapSmoothingParameters smoothing = params.MapSmoothing;
+  if (!params.SmoothMap)
   {
-    result.InvertedTetCount += SignedVolume(result.Positions, cells, t) > 0.0 ? 0 : 1;
+    smoothing.MaxRounds = 0;
+  }
+  status = smoothPolycubeMap(rest,
+    cells,
+    solver.FreeBasis(),
+    smoothing,
+    result.Positions,
+    result.MapSmoothing,
+    [&progress](double p) { return ReportProgress(progress, 0.9 + 0.1 * p); });
+  if (!status)
+  {
+    return status;
+  }
+  result.InvertedTetCount = result.MapSmoothing.InvertedTetsAfter;
+  if (result.MapSmoothing.Kept)
+  {
+    result.MinVolumeRatio = solver.MinVolumeRatio(result.Positions);
+    if (result.BestEffort && result.MinVolumeRatio >= params.MinimumVolumeRatio)
+    {
+      // The smoothing untangled what the rounding could not.
+      result.BestEffort = false;
+      result.BestEffortReason.clear();
+    }
   }
   result.PlanesAfter = planes;
   result.MaxPlaneShift =

@@ -29,6 +29,7 @@
 #pragma once
 
 #include "MeshTypes.h"
+#include "PolycubeMapSmoothing.h"
 #include "PolycubeSeams.h"
 #include "Status.h"
 
@@ -169,6 +170,9 @@ public:
   /// Smallest ratio of a tet's signed volume in `positions` to its volume in the reference.
   double MinVolumeRatio(const Points& positions) const;
 
+  /// #3V by #F: how the free variables move the coordinates (x = Bf f + Bz z + Offset).
+  const Eigen::SparseMatrix<double>& FreeBasis() const;
+
 private:
   struct Impl;
   std::unique_ptr<Impl> Data;
@@ -207,6 +211,10 @@ struct IntegerRoundingParameters
   /// (then AcceptInvertedTets decides). Both rarely rescue a polycube whose labels the
   /// deformation could not flatten, and on 75k tets they took minutes.
   double TimeBudgetSeconds = 10.0;
+  /// The last step, when on: the rounded map is smoothed over its free coordinates, planes and
+  /// cut relations held (PolycubeMapSmoothing.h; default off).
+  bool SmoothMap = false;
+  PolycubeMapSmoothingParameters MapSmoothing;
 };
 
 /// What roundPolycubePlanes produced.
@@ -240,6 +248,8 @@ struct IntegerRoundingResult
   /// plane from an integer (0 up to round-off).
   std::vector<Eigen::Vector3d> CutTranslations;
   double MaxPlaneFraction = 0.0;
+  /// What the smoothing of the rounded map did (IntegerRoundingParameters::MapSmoothing).
+  PolycubeMapSmoothingResult MapSmoothing;
 };
 
 /// Rounds every chart plane of `reference` to an integer greedily and re-solves the vertices.

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Runs the hex stage alone on a model's polycube, caching the polycube, so that the hex stage
+can be tuned in seconds instead of re-running the cuts, frames and deformation each time.
+
+    PYTHONPATH=build/lib/python3/dist-packages python3.11 Testing/Benchmark/hex_stage.py \
+        ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--map-smoothing] \
+        [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
+
+The first run writes <cache>/<model>_<guidance>.vtu (the deformation's port 0, its field data
+included); later runs read it. Prints the hex stage's seconds per step and its quality fields,
+and with --worst N the N worst hexes (scaled Jacobian, centre, and how many of their vertices
+lie on the boundary). Not run by CTest.
+"""
+import argparse
+import os
+import sys
+import time
+
+import polycubehex
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from benchmark import load, run_filter, tetrahedralize  # noqa: E402
+
+
+def polycube_of(path, guidance, cache):
+    name = os.path.splitext(os.path.basename(path))[0]
+    cached = os.path.join(cache, "%s_%s.vtu" % (name, guidance))
+    if os.path.exists(cached):
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(cached)
+        reader.Update()
+        return reader.GetOutput()
+    data, is_surface = load(path)
+    grid = tetrahedralize(data) if is_surface else data
+    source = grid
+    if guidance == "FrameField":
+        cuts = run_filter(polycubehex.vtkHandleCutFilter(), grid)
+        source = run_filter(polycubehex.vtkFrameFieldFilter(), cuts)
+    deform = polycubehex.vtkPolycubeDeformFilter()
+    deform.SetGuidance(deform.UNIFORM if guidance == "Uniform" else deform.FRAME_FIELD)
+    start = time.perf_counter()
+    polycube = run_filter(deform, source)
+    print("polycube: %.1f s" % (time.perf_counter() - start))
+    if polycube is None:
+        sys.exit("the deformation refused the model")
+    os.makedirs(cache, exist_ok=True)
+    writer = vtkXMLUnstructuredGridWriter()
+    writer.SetFileName(cached)
+    writer.SetInputData(polycube)
+    writer.Write()
+    return polycube
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("model")
+    parser.add_argument("--guidance", choices=("Uniform", "FrameField"), default="FrameField")
+    parser.add_argument("--hexes", type=int, default=10000)
+    parser.add_argument("--no-smoothing", action="store_true")
+    parser.add_argument("--no-padding", action="store_true")
+    parser.add_argument("--map-smoothing", action="store_true")
+    parser.add_argument("--cache", default="/tmp/polycubehex-polycubes")
+    parser.add_argument("--output", help="write the hexes (.vtu)")
+    parser.add_argument("--worst", type=int, default=0)
+    args = parser.parse_args()
+
+    polycube = polycube_of(args.model, args.guidance, args.cache)
+    extract = polycubehex.vtkHexExtractFilter()
+    extract.SetTargetHexCount(args.hexes)
+    extract.SetSmoothing(0 if args.no_smoothing else 1)
+    extract.SetPadding(0 if args.no_padding else 1)
+    extract.SetMapSmoothing(1 if args.map_smoothing else 0)
+    start = time.perf_counter()
+    hexes = run_filter(extract, polycube)
+    print("hex stage: %.2f s" % (time.perf_counter() - start))
+    if hexes is None:
+        sys.exit("the hex stage refused the polycube")
+    fields = hexes.GetFieldData()
+    for i in range(fields.GetNumberOfArrays()):
+        array = fields.GetAbstractArray(i)
+        if array.GetNumberOfTuples() == 1 and array.GetNumberOfComponents() == 1 and \
+                hasattr(array, "GetTuple1"):
+            print("  %-40s %g" % (array.GetName(), array.GetTuple1(0)))
+    if args.worst > 0:
+        print_worst_hexes(hexes, args.worst)
+    if args.output:
+        writer = vtkXMLUnstructuredGridWriter()
+        writer.SetFileName(args.output)
+        writer.SetInputData(hexes)
+        writer.Write()
+
+
+def print_worst_hexes(hexes, count):
+    from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
+    surface = vtkDataSetSurfaceFilter()
+    surface.SetInputData(hexes)
+    surface.PassThroughPointIdsOn()
+    surface.Update()
+    ids = surface.GetOutput().GetPointData().GetArray("vtkOriginalPointIds")
+    boundary = {int(ids.GetTuple1(i)) for i in range(ids.GetNumberOfTuples())}
+    quality = hexes.GetCellData().GetArray("ScaledJacobian")
+    order = sorted(range(hexes.GetNumberOfCells()), key=quality.GetTuple1)[:count]
+    for cell in order:
+        points = hexes.GetCell(cell).GetPointIds()
+        corners = [points.GetId(k) for k in range(8)]
+        centre = [sum(hexes.GetPoint(p)[axis] for p in corners) / 8 for axis in range(3)]
+        print("  hex %6d  SJ %+.3f  centre (%.3f, %.3f, %.3f)  boundary vertices %d" % (
+            cell, quality.GetTuple1(cell), *centre, sum(p in boundary for p in corners)))
+
+
+if __name__ == "__main__":
+    main()
