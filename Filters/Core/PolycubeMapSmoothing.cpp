@@ -2,6 +2,7 @@
 #include "PolycubeMapSmoothing.h"
 
 #include "FoldoverFreeEnergy.h"
+#include "TetGeometry.h"
 #include "ThreadCount.h"
 
 #include <ceres/first_order_function.h>
@@ -156,20 +157,12 @@ private:
   mutable std::vector<Eigen::Matrix<double, 4, 3>> TetGradient;
 };
 
-double SignedVolume(const Points& x, const Tets& cells, int t)
-{
-  const Eigen::Vector3d a = x.row(cells(t, 0)).transpose();
-  return (x.row(cells(t, 1)).transpose() - a)
-           .dot((x.row(cells(t, 2)).transpose() - a).cross(x.row(cells(t, 3)).transpose() - a)) /
-    6.0;
-}
-
 int CountInverted(const Points& x, const Tets& cells)
 {
   int count = 0;
   for (int t = 0; t < static_cast<int>(cells.rows()); ++t)
   {
-    count += SignedVolume(x, cells, t) > 0.0 ? 0 : 1;
+    count += TetSignedVolume(x, cells, t) > 0.0 ? 0 : 1;
   }
   return count;
 }
@@ -251,7 +244,7 @@ Status smoothPolycubeMap(const Points& rest,
     g.row(0) = -(g.row(1) + g.row(2) + g.row(3));
     weights[static_cast<size_t>(t)] = volume;
     restVolume += volume;
-    mappedVolume += SignedVolume(positions, cells, t);
+    mappedVolume += TetSignedVolume(positions, cells, t);
   }
   if (!(mappedVolume > 0.0))
   {
