@@ -82,8 +82,9 @@ public:
   ///@{
   /// Smooth the rounded polycube map before the hexes are extracted: every coordinate the
   /// chart planes and cuts leave free minimises a foldover-free distortion energy of the map
-  /// (the hexes are its image of unit cubes). Not in the paper. Default off: it helps the raw
-  /// extraction on some models, not the smoothed meshes (see HexExtraction.h).
+  /// (the hexes are its image of unit cubes); kept only when it leaves no tet inverted. Not in
+  /// the paper. Default off: it helps some models (bunny, fandisk) and not others, and costs
+  /// seconds on large ones (see HexExtraction.h).
   vtkSetMacro(MapSmoothing, bool);
   vtkGetMacro(MapSmoothing, bool);
   vtkBooleanMacro(MapSmoothing, bool);

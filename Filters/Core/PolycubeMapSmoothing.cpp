@@ -328,7 +328,7 @@ Status smoothPolycubeMap(const Points& rest,
   energy->SetEps(1e-10, false);
   result.EnergyAfter = energy->Compute(y.data(), nullptr, minDet);
   const int inverted = CountInverted(smoothed, cells);
-  if (inverted <= result.InvertedTetsBefore)
+  if (inverted <= result.InvertedTetsBefore && (inverted == 0 || !params.RequireUntangled))
   {
     positions = smoothed;
     result.InvertedTetsAfter = inverted;

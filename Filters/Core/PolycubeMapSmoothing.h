@@ -12,7 +12,7 @@
 // Jacobians divided by the map's mean scale, weighted by the input tets' volumes. The boundary
 // slides in its chart planes and along the polycube edges, corners stay. The same energy
 // untangles tets the rounding left inverted, where the planes allow it. The result is kept only
-// when it has no more inverted tets than the input.
+// when it has no more inverted tets than the input (by default: none).
 #pragma once
 
 #include "MeshTypes.h"
@@ -36,6 +36,11 @@ struct PolycubeMapSmoothingParameters
   /// The rounds stop once no tet is inverted and a round lowers the energy by less than this
   /// fraction (default 1e-3).
   double Tolerance = 1e-3;
+  /// Keep the result only when it leaves no tet inverted (default on). Where the planes force
+  /// inverted tets, the smoothed map spreads them: kitten's l1 polycube kept 43 of 99 and its
+  /// hexes' Hausdorff distance went from 11.8 to 33.7, rockerarm's closed form kept 27 of 42
+  /// and its smoothed minimum scaled Jacobian fell from 0.325 to 0.198.
+  bool RequireUntangled = true;
 };
 
 /// What smoothPolycubeMap did.

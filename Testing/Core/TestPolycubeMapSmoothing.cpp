@@ -2,7 +2,8 @@
 // smoothPolycubeMap on a tet grid of a cube whose polycube is the cube itself, with the free
 // coordinates the rounding would leave (interior vertices free, face vertices sliding in their
 // face, edge vertices along their edge, corners fixed): a distorted map goes back to the
-// identity, held coordinates do not move, an inverted map is untangled, coordinates sharing a
+// identity, held coordinates do not move, an inverted map is untangled (and one its planes keep
+// inverted is discarded), coordinates sharing a
 // free variable stay equal, one or two threads give the same bits, bad sizes are refused.
 #include "PolycubeMapSmoothing.h"
 #include "TetGeometry.h"
@@ -138,6 +139,37 @@ void TestInvertedMapIsUntangled()
   PCH_CHECK(x(onFace, 0) == -1.0);
 }
 
+void TestMapLeftInvertedIsDiscarded()
+{
+  // Only the interior vertex nearest (1, 1, 1) is free; the corner (-1, -1, -1), held by its
+  // planes, is pushed inside so that tets the free vertex does not touch are inverted.
+  const TetMesh cube = CubeGrid(3);
+  const int free = (2 * 4 + 2) * 4 + 2; // (1/3, 1/3, 1/3)
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int a = 0; a < 3; ++a)
+  {
+    entries.emplace_back(3 * free + a, a, 1.0);
+  }
+  Eigen::SparseMatrix<double> basis(cube.Vertices.size(), 3);
+  basis.setFromTriplets(entries.begin(), entries.end());
+  Points x = cube.Vertices;
+  x.row(0) << -0.2, -0.2, -0.2;
+  x.row(free) << 0.5, 0.1, 0.3;
+  const Points start = x;
+  PolycubeMapSmoothingResult result;
+  PCH_CHECK(smoothPolycubeMap(cube.Vertices, cube.Cells, basis, {}, x, result));
+  PCH_CHECK(result.InvertedTetsBefore > 0);
+  PCH_CHECK(!result.Kept);
+  PCH_CHECK(result.InvertedTetsAfter == result.InvertedTetsBefore);
+  PCH_CHECK(x == start);
+  // Without the requirement, the free vertex's improvement is kept.
+  PolycubeMapSmoothingParameters params;
+  params.RequireUntangled = false;
+  PCH_CHECK(smoothPolycubeMap(cube.Vertices, cube.Cells, basis, params, x, result));
+  PCH_CHECK(result.Kept);
+  PCH_CHECK((x.row(free) - cube.Vertices.row(free)).norm() < (start.row(free) - cube.Vertices.row(free)).norm());
+}
+
 void TestSharedVariablesStayEqual()
 {
   const TetMesh cube = CubeGrid(4);
@@ -190,6 +222,7 @@ int main()
 {
   TestDistortedMapReturnsToIdentity();
   TestInvertedMapIsUntangled();
+  TestMapLeftInvertedIsDiscarded();
   TestSharedVariablesStayEqual();
   TestThreadCountsAgree();
   TestBadSizesAreRefused();
