@@ -267,6 +267,9 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     polycubehex::SetFieldValue<vtkDoubleArray>(fields, "FrameFitResidual", result.FrameFitResidual);
   }
   polycubehex::SetFieldValue<vtkIntArray>(fields, "ChartCount", result.ChartCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "UnflattenedVertexCount", result.UnflattenedVertexCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MaxPlaneDeviation", result.MaxPlaneDeviation);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
   vtkNew<vtkDoubleArray> translations; // t_c of x_plus = Pi_c x_minus + t_c; none when uncut
   translations->SetName(names::CutTranslations);

@@ -24,7 +24,10 @@
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
  * carried to split tets), and field data `CornerCount`, `InvertedTetCount`, `PolycubeResidual`,
- * `Guidance`. Output port 1: the polycube boundary with cell arrays `PolycubeLabel`, `ChartId`.
+ * `Guidance`, `ChartCount`, `PolycubeSeconds`, `UnflattenedVertexCount` (vertices left off their
+ * chart planes because snapping them would invert a tet; 0 means every chart is exactly flat) and
+ * `MaxPlaneDeviation` (the largest distance of a chart vertex from its plane, input units).
+ * Output port 1: the polycube boundary with cell arrays `PolycubeLabel`, `ChartId`.
  */
 #ifndef vtkPolycubeDeformFilter_h
 #define vtkPolycubeDeformFilter_h

@@ -11,6 +11,7 @@ or directly with Debian's python3.11 and the build tree's package on PYTHONPATH:
 Timings are wall seconds, the median of --repeat runs (DESIGN.md section 4: medians of 3).
 """
 import argparse
+import math
 import os
 import platform
 import resource
@@ -157,6 +158,12 @@ def run_guidance(name, tets, source, guidance, repeat):
     row["corners"] = int(fields.GetArray("CornerCount").GetTuple1(0))
     row["inverted tets"] = int(fields.GetArray("InvertedTetCount").GetTuple1(0))
     row["residual"] = fields.GetArray("PolycubeResidual").GetTuple1(0)
+    # Issue 3 wants every chart exactly flat: vertices left off their planes (snapping them
+    # would invert a tet), and the largest deviation in units of the polycube's diagonal.
+    row["off-plane vertices"] = int(fields.GetArray("UnflattenedVertexCount").GetTuple1(0))
+    bounds = polycube.GetBounds()
+    diagonal = math.sqrt(sum((bounds[2 * a + 1] - bounds[2 * a]) ** 2 for a in range(3)))
+    row["plane dev / d"] = fields.GetArray("MaxPlaneDeviation").GetTuple1(0) / diagonal
 
     # §4.3: hexes at the paper's hex count for this method where it has the model (l1 rows for
     # Uniform, closed-form rows for FrameField), else 10,000; smoothing off (the paper has
@@ -322,7 +329,8 @@ def main():
                "cut areas / d^2", "cut s", "frame s", "align deg", "singular", "max depth",
                "transitions"]
     hex_columns = ["model", "guidance", "tets", "polycube s", "corners", "inverted tets",
-                   "residual", "target", "rounding inverted tets", "hexes", "SJ min/mean",
+                   "residual", "off-plane vertices", "plane dev / d", "target",
+                   "rounding inverted tets", "hexes", "SJ min/mean",
                    "dist mean/H", "inverted hexes", "valid", "hex s", "SJ min/mean smooth",
                    "dist mean/H smooth", "inverted hexes smooth", "valid smooth", "hex s smooth"]
     hex_rows = [r for row in rows for r in row.get("guidance rows", [])]

@@ -162,6 +162,12 @@ void TestMapLeftInvertedIsDiscarded()
   PCH_CHECK(!result.Kept);
   PCH_CHECK(result.InvertedTetsAfter == result.InvertedTetsBefore);
   PCH_CHECK(x == start);
+  // It gives up as soon as a round leaves more than half of the inverted tets, instead of
+  // running all its rounds for a map that is discarded.
+  std::cout << "forced inversions: gave up after " << result.Rounds << " of "
+            << PolycubeMapSmoothingParameters().MaxRounds << " rounds" << std::endl;
+  PCH_CHECK(result.GaveUp);
+  PCH_CHECK(result.Rounds < PolycubeMapSmoothingParameters().MaxRounds);
   // Without the requirement, the free vertex's improvement is kept.
   PolycubeMapSmoothingParameters params;
   params.RequireUntangled = false;
