@@ -19,6 +19,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <array>
@@ -269,6 +270,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   }
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RoundingInvertedTetCount", result.RoundingInvertedTetCount);
+  polycubehex::SetFieldValue<vtkStringArray>(fields, "RoundingPath", result.RoundingPath);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MapEnergyBefore", result.MapEnergyBefore);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MapEnergyAfter", result.MapEnergyAfter);
   polycubehex::SetFieldValue<vtkIntArray>(

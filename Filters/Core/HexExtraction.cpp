@@ -346,6 +346,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     result.IntegerCutTranslations = cutSeams.Translations;
   }
   result.RoundingFallbackCount = rounded.FallbackCount;
+  result.RoundingPath = rounded.BestEffort ? "best effort"
+    : rounded.Relaxed                      ? "relaxed"
+    : rounded.CarefulPath                  ? "careful"
+                                           : "fast";
   result.MaxPlaneShift = rounded.MaxPlaneShift;
   result.RoundingMinVolumeRatio = rounded.MinVolumeRatio;
   result.MapEnergyBefore = rounded.MapSmoothing.EnergyBefore;

@@ -86,8 +86,8 @@ struct HexExtractionParameters
   /// it leaves no tet inverted. Measured with the hex smoothing on, it raised the minimum scaled
   /// Jacobian of bunny (0.275 -> 0.382 l1, 0.144 -> 0.325 closed form) and fandisk (0.204 ->
   /// 0.296, 0.289 -> 0.333), lowered kitten's closed form (0.562/0.947 -> 0.556/0.941), and
-  /// on rockerarm, elephant and kitten l1, where the planes force inverted tets, it is discarded
-  /// after 3-10 s of work; hence off.
+  /// on rockerarm, elephant and kitten l1, where the planes force inverted tets, it gives up
+  /// after 1-7 s of work; hence off.
   bool MapSmoothing = false;
 };
 
@@ -116,6 +116,10 @@ struct HexExtractionResult
   int PlaneCount = 0;
   int RoundingFallbackCount = 0; ///< planes not rounded to their nearest integer
   int RoundingAttempts = 0;      ///< scales tried (1 when the target scale worked)
+  /// How the kept rounding was reached: "fast" (the separations alone, one re-solve and
+  /// untangling), "careful" (a volume check per candidate), "relaxed" (the barrier-guarded
+  /// relaxation) or "best effort" (tets left inverted).
+  std::string RoundingPath;
   /// With cuts: the translation t_c of each cut in lattice units, integers (the data contract's
   /// IntegerCutTranslations).
   std::vector<Eigen::Vector3d> IntegerCutTranslations;

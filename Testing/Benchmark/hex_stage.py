@@ -81,9 +81,12 @@ def main():
     fields = hexes.GetFieldData()
     for i in range(fields.GetNumberOfArrays()):
         array = fields.GetAbstractArray(i)
-        if array.GetNumberOfTuples() == 1 and array.GetNumberOfComponents() == 1 and \
-                hasattr(array, "GetTuple1"):
+        if array.GetNumberOfTuples() != 1 or array.GetNumberOfComponents() != 1:
+            continue
+        if hasattr(array, "GetTuple1"):
             print("  %-40s %g" % (array.GetName(), array.GetTuple1(0)))
+        else:
+            print("  %-40s %s" % (array.GetName(), array.GetVariantValue(0).ToString()))
     if args.worst > 0:
         print_worst_hexes(hexes, args.worst)
     if args.output:
