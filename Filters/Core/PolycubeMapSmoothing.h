@@ -53,8 +53,8 @@ struct PolycubeMapSmoothingResult
   int Rounds = 0;
   int Iterations = 0;
   bool Kept = false; ///< false when the result was worse than the input and discarded
-  /// True when a round could not lower the number of inverted tets under RequireUntangled, and
-  /// the rounds stopped there (the result is then discarded).
+  /// True when, under RequireUntangled, a round left more than half of the inverted tets it
+  /// started from and the rounds stopped there (the result is then discarded).
   bool GaveUp = false;
 };
 

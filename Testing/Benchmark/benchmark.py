@@ -11,7 +11,6 @@ or directly with Debian's python3.11 and the build tree's package on PYTHONPATH:
 Timings are wall seconds, the median of --repeat runs (DESIGN.md section 4: medians of 3).
 """
 import argparse
-import math
 import os
 import platform
 import resource
@@ -161,9 +160,7 @@ def run_guidance(name, tets, source, guidance, repeat):
     # Issue 3 wants every chart exactly flat: vertices left off their planes (snapping them
     # would invert a tet), and the largest deviation in units of the polycube's diagonal.
     row["off-plane vertices"] = int(fields.GetArray("UnflattenedVertexCount").GetTuple1(0))
-    bounds = polycube.GetBounds()
-    diagonal = math.sqrt(sum((bounds[2 * a + 1] - bounds[2 * a]) ** 2 for a in range(3)))
-    row["plane dev / d"] = fields.GetArray("MaxPlaneDeviation").GetTuple1(0) / diagonal
+    row["plane dev / d"] = fields.GetArray("MaxPlaneDeviation").GetTuple1(0) / diagonal_of(polycube)
 
     # §4.3: hexes at the paper's hex count for this method where it has the model (l1 rows for
     # Uniform, closed-form rows for FrameField), else 10,000; smoothing off (the paper has
