@@ -202,6 +202,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.TargetHexCount = this->TargetHexCount;
   params.TargetEdgeLength = this->TargetEdgeLength;
   params.Padding = this->Padding;
+  params.PaddingPlacement = this->PaddingPlacement;
   params.Smoothing = this->Smoothing;
   params.SmoothingIterations = this->SmoothingIterations;
   params.Untangling = this->Untangling;
@@ -248,6 +249,13 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     }
   }
   polycubehex::SetFieldValue<vtkIntArray>(fields, "PaddingHexCount", result.PaddingHexCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "PlacedPaddingVertexCount", result.PlacedPaddingVertexCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields,
+    "PaddingScaledJacobianMeanBeforePlacement",
+    result.PaddingScaledJacobianMeanBeforePlacement);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "PaddingScaledJacobianMean", result.PaddingScaledJacobianMean);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "LatticeScale", result.LatticeScale);
   if (!result.IntegerCutTranslations.empty())
   {
@@ -322,6 +330,7 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetHexCount: " << this->TargetHexCount << "\n";
   os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << "\n";
   os << indent << "Padding: " << this->Padding << "\n";
+  os << indent << "PaddingPlacement: " << this->PaddingPlacement << "\n";
   os << indent << "Smoothing: " << this->Smoothing << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "Untangling: " << this->Untangling << "\n";

@@ -57,6 +57,16 @@ public:
   ///@}
 
   ///@{
+  /// With Padding and without Smoothing: place each inner copy of the padding layer between its
+  /// position mapped from the polycube and its boundary vertex pushed along the surface normal,
+  /// where its hexes are best. With Smoothing the untangling and the sweeps optimise the inner
+  /// copies from their mapped positions instead (measured better). Default on.
+  vtkSetMacro(PaddingPlacement, bool);
+  vtkGetMacro(PaddingPlacement, bool);
+  vtkBooleanMacro(PaddingPlacement, bool);
+  ///@}
+
+  ///@{
   /// Smooth and untangle after extraction, keeping boundary vertices on the input surface.
   /// Our addition (the paper has none). Default on.
   vtkSetMacro(Smoothing, bool);
@@ -121,6 +131,7 @@ protected:
   int TargetHexCount = 5000;
   double TargetEdgeLength = 0.0;
   bool Padding = true;
+  bool PaddingPlacement = true;
   bool Smoothing = true;
   int SmoothingIterations = 20;
   bool Untangling = true;

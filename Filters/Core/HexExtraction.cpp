@@ -6,6 +6,7 @@
 #include "HexDoublets.h"
 #include "HexLatticeExtraction.h"
 #include "HexLatticePadding.h"
+#include "HexPaddingPlacement.h"
 #include "HexMeshValidity.h"
 #include "HexPadding.h"
 #include "HexResolution.h"
@@ -408,6 +409,23 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     }
     result.PaddingHexCount = padding.PaddingHexCount;
     result.UnmappedPaddingVertexCount = padding.UnmappedVertexCount;
+    // With Smoothing the untangling and the sweeps move the inner copies themselves, and from
+    // the placed positions they did worse where the rounding left tets inverted (fertility
+    // Uniform at 17,910 hexes: smoothed minimum 0.346 -> 0.064, Hausdorff 12.5 -> 26.6e-3;
+    // rockerarm closed form: Hausdorff 8.4 -> 13.1e-3), so they start from the mapped ones.
+    if (params.PaddingPlacement && !params.Smoothing)
+    {
+      HexPaddingPlacementParameters placement;
+      placement.Thickness = params.PaddingThickness;
+      HexPaddingPlacementResult placed;
+      if (!(status = placePaddingCopies(lattice.Mesh, padding.PaddingHexCount, placement, placed)))
+      {
+        return status;
+      }
+      result.PlacedPaddingVertexCount = placed.MovedCount;
+      result.PaddingScaledJacobianMeanBeforePlacement = placed.MeanBefore;
+      result.PaddingScaledJacobianMean = placed.MeanAfter;
+    }
   }
   result.PaddingSeconds = Seconds(start);
   HexMesh mesh = std::move(lattice.Mesh);

@@ -53,6 +53,11 @@ struct HexExtractionParameters
   /// Thickness of the padding layer before smoothing, in hex edges (default 1/3, in (0, 0.5)):
   /// a part one hex thick becomes three equal layers (1/2 would merge the copies of its sides).
   double PaddingThickness = 1.0 / 3.0;
+  /// Without Smoothing: place each inner copy of the padding layer, in the input's space,
+  /// between its mapped position and its boundary vertex pushed along the surface normal, where
+  /// its hexes are best (HexPaddingPlacement.h; default on). With Smoothing the inner copies are
+  /// optimised by the untangling and the sweeps, from their mapped positions (measured better).
+  bool PaddingPlacement = true;
   /// Quality-guarded Laplacian smoothing after extraction (default on; the paper has none).
   bool Smoothing = true;
   /// Smoothing sweeps (default 20, >= 0).
@@ -106,6 +111,11 @@ struct HexExtractionResult
   /// Padding copies placed by the fallback rule (mean of hex centres) because their lattice
   /// position could not be located in the tets (0 normally).
   int UnmappedPaddingVertexCount = 0;
+  /// Inner copies PaddingPlacement moved off their mapped position, and the padding hexes'
+  /// mean scaled Jacobian before and after it.
+  int PlacedPaddingVertexCount = 0;
+  double PaddingScaledJacobianMeanBeforePlacement = 0.0;
+  double PaddingScaledJacobianMean = 0.0;
   double ScaledJacobianMin = 0.0;
   double ScaledJacobianMean = 0.0;
   int InvertedHexCount = 0; ///< hexes with scaled Jacobian <= 0

@@ -7,6 +7,7 @@
 //   PCH_FRAMES=cuts BenchPolycube ...   (the closed form: cuts, frames with transitions)
 //   PCH_ROUNDS=1 BenchPolycube ...      (prints every continuation round)
 //   PCH_FLATTEN=0 ...                   (stop after labelling: the output is the deformed mesh)
+//   PCH_LABELS=labels.txt ...           (writes each boundary face's label and chart id)
 //
 // With an output path, the polycube of the last run is written as MEDIT (tets and boundary
 // triangles).
@@ -251,6 +252,18 @@ int main(int argc, char* argv[])
     {
       std::fprintf(stderr, "%s\n", written.Message().c_str());
       return 1;
+    }
+  }
+  if (const char* labelPath = std::getenv("PCH_LABELS"))
+  {
+    // Per boundary face (the order of the output's triangles): label and chart id.
+    if (FILE* file = std::fopen(labelPath, "w"))
+    {
+      for (size_t f = 0; f < result.BoundaryFaceLabel.size(); ++f)
+      {
+        std::fprintf(file, "%d %d\n", result.BoundaryFaceLabel[f], result.ChartId[f]);
+      }
+      std::fclose(file);
     }
   }
   if (argc > 4)

@@ -4,7 +4,7 @@
 can be tuned in seconds instead of re-running the cuts, frames and deformation each time.
 
     PYTHONPATH=build/lib/python3/dist-packages python3.11 Testing/Benchmark/hex_stage.py \
-        ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--map-smoothing] \
+        ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--no-padding-placement] [--map-smoothing] \
         [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
 
 The first run writes <cache>/<model>_<guidance>.vtu (the deformation's port 0, its field data
@@ -61,6 +61,7 @@ def main():
     parser.add_argument("--hexes", type=int, default=10000)
     parser.add_argument("--no-smoothing", action="store_true")
     parser.add_argument("--no-padding", action="store_true")
+    parser.add_argument("--no-padding-placement", action="store_true")
     parser.add_argument("--map-smoothing", action="store_true")
     parser.add_argument("--cache", default="/tmp/polycubehex-polycubes")
     parser.add_argument("--output", help="write the hexes (.vtu)")
@@ -72,6 +73,7 @@ def main():
     extract.SetTargetHexCount(args.hexes)
     extract.SetSmoothing(0 if args.no_smoothing else 1)
     extract.SetPadding(0 if args.no_padding else 1)
+    extract.SetPaddingPlacement(0 if args.no_padding_placement else 1)
     extract.SetMapSmoothing(1 if args.map_smoothing else 0)
     start = time.perf_counter()
     hexes = run_filter(extract, polycube)

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "HexPaddingPlacement.h"
+
+#include "HexScaledJacobian.h"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+namespace polycubehex
+{
+
+namespace
+{
+/// Smallest and mean scaled Jacobian of `hexes`.
+std::pair<double, double> HexQuality(const HexMesh& mesh, const std::vector<int>& hexes)
+{
+  double minimum = std::numeric_limits<double>::max();
+  double sum = 0.0;
+  for (int h : hexes)
+  {
+    const double q = HexScaledJacobian(mesh, h);
+    minimum = std::min(minimum, q);
+    sum += q;
+  }
+  return { minimum, hexes.empty() ? 0.0 : sum / static_cast<double>(hexes.size()) };
+}
+} // namespace
+
+Status placePaddingCopies(HexMesh& mesh,
+  int paddingHexCount,
+  const HexPaddingPlacementParameters& params,
+  HexPaddingPlacementResult& result)
+{
+  result = HexPaddingPlacementResult();
+  const int hexCount = static_cast<int>(mesh.Cells.rows());
+  const int vertexCount = static_cast<int>(mesh.Vertices.rows());
+  if (paddingHexCount < 0 || paddingHexCount > hexCount)
+  {
+    return Status::Failure("placePaddingCopies: the padding hex count is out of range");
+  }
+  const int firstPadding = hexCount - paddingHexCount;
+
+  // Each inner copy's boundary vertex, and per boundary vertex the inward normal (sum of its
+  // boundary quads' area vectors; face 0-1-2-3 of a positive hex faces its top) and the mean
+  // length of its boundary edges.
+  std::vector<int> outerOf(static_cast<size_t>(vertexCount), -1);
+  Points inward = Points::Zero(vertexCount, 3);
+  std::vector<double> edgeSum(static_cast<size_t>(vertexCount), 0.0);
+  std::vector<int> edgeCount(static_cast<size_t>(vertexCount), 0);
+  for (int h = firstPadding; h < hexCount; ++h)
+  {
+    Eigen::Matrix<double, 4, 3> quad;
+    for (int k = 0; k < 4; ++k)
+    {
+      const int outer = mesh.Cells(h, k);
+      const int inner = mesh.Cells(h, k + 4);
+      if (outer < 0 || outer >= vertexCount || inner < 0 || inner >= vertexCount ||
+        (outerOf[static_cast<size_t>(inner)] >= 0 && outerOf[static_cast<size_t>(inner)] != outer))
+      {
+        return Status::Failure("placePaddingCopies: hex " + std::to_string(h) +
+          " is not a padding hex (boundary quad, then its inner copies)");
+      }
+      outerOf[static_cast<size_t>(inner)] = outer;
+      quad.row(k) = mesh.Vertices.row(outer);
+    }
+    const Eigen::RowVector3d area =
+      0.5 * (quad.row(2) - quad.row(0)).cross(quad.row(3) - quad.row(1));
+    for (int k = 0; k < 4; ++k)
+    {
+      const int outer = mesh.Cells(h, k);
+      inward.row(outer) += area;
+      edgeSum[static_cast<size_t>(outer)] +=
+        (quad.row(k) - quad.row((k + 1) % 4)).norm() + (quad.row(k) - quad.row((k + 3) % 4)).norm();
+      edgeCount[static_cast<size_t>(outer)] += 2;
+    }
+  }
+
+  // The hexes at each inner copy.
+  std::vector<std::vector<int>> hexesAt(static_cast<size_t>(vertexCount));
+  for (int h = 0; h < hexCount; ++h)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      const int v = mesh.Cells(h, k);
+      if (v >= 0 && v < vertexCount && outerOf[static_cast<size_t>(v)] >= 0)
+      {
+        hexesAt[static_cast<size_t>(v)].push_back(h);
+      }
+    }
+  }
+
+  std::vector<int> copies;
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    if (outerOf[static_cast<size_t>(v)] >= 0)
+    {
+      copies.push_back(v);
+    }
+  }
+  const Points mapped = mesh.Vertices;
+  Points pushed = mapped;
+  for (int v : copies)
+  {
+    const int outer = outerOf[static_cast<size_t>(v)];
+    const double norm = inward.row(outer).norm();
+    if (norm > 0.0 && edgeCount[static_cast<size_t>(outer)] > 0)
+    {
+      const double edge = edgeSum[static_cast<size_t>(outer)] / edgeCount[static_cast<size_t>(outer)];
+      pushed.row(v) =
+        mesh.Vertices.row(outer) + (params.Thickness * edge / norm) * inward.row(outer);
+    }
+  }
+
+  auto paddingMean = [&]()
+  {
+    double sum = 0.0;
+    for (int h = firstPadding; h < hexCount; ++h)
+    {
+      sum += HexScaledJacobian(mesh, h);
+    }
+    return paddingHexCount > 0 ? sum / paddingHexCount : 0.0;
+  };
+  auto copiesMin = [&]()
+  {
+    double minimum = std::numeric_limits<double>::max();
+    for (int v : copies)
+    {
+      minimum = std::min(minimum, HexQuality(mesh, hexesAt[static_cast<size_t>(v)]).first);
+    }
+    return copies.empty() ? 0.0 : minimum;
+  };
+  result.MeanBefore = paddingMean();
+  result.MinBefore = copiesMin();
+
+  // Gauss-Seidel in vertex order: a copy moves only to a strictly better candidate.
+  std::vector<double> blend(static_cast<size_t>(vertexCount), 0.0);
+  for (int sweep = 0; sweep < params.Sweeps; ++sweep)
+  {
+    bool moved = false;
+    for (int v : copies)
+    {
+      const std::vector<int>& hexes = hexesAt[static_cast<size_t>(v)];
+      double best = blend[static_cast<size_t>(v)];
+      std::pair<double, double> bestQuality = HexQuality(mesh, hexes);
+      for (double b : params.Blends)
+      {
+        if (b == blend[static_cast<size_t>(v)])
+        {
+          continue;
+        }
+        mesh.Vertices.row(v) = (1.0 - b) * mapped.row(v) + b * pushed.row(v);
+        const std::pair<double, double> quality = HexQuality(mesh, hexes);
+        if (quality > bestQuality)
+        {
+          bestQuality = quality;
+          best = b;
+        }
+      }
+      mesh.Vertices.row(v) = (1.0 - best) * mapped.row(v) + best * pushed.row(v);
+      moved = moved || best != blend[static_cast<size_t>(v)];
+      blend[static_cast<size_t>(v)] = best;
+    }
+    if (!moved)
+    {
+      break;
+    }
+  }
+  for (int v : copies)
+  {
+    result.MovedCount += blend[static_cast<size_t>(v)] != 0.0 ? 1 : 0;
+  }
+  result.MeanAfter = paddingMean();
+  result.MinAfter = copiesMin();
+  return Status::Success();
+}
+
+} // namespace polycubehex

@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// placePaddingCopies (HexPaddingPlacement.h): on a padded grid of cubes whose inner copies were
+// put in skewed places (as a distorted polycube map leaves them), the placement raises the
+// padding hexes' mean scaled Jacobian and the number of valid hexes, never lowers any hex's
+// minimum around a copy, moves only the inner copies, and refuses malformed padding.
+#include "HexPadding.h"
+#include "HexPaddingPlacement.h"
+#include "HexScaledJacobian.h"
+#include "TestAssert.h"
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+using namespace polycubehex;
+
+namespace
+{
+/// An n x n x n grid of unit cubes (VTK order, positive).
+HexMesh CubeGrid(int n)
+{
+  HexMesh mesh;
+  const int side = n + 1;
+  mesh.Vertices.resize(side * side * side, 3);
+  auto id = [side](int i, int j, int k) { return i + side * (j + side * k); };
+  for (int k = 0; k < side; ++k)
+  {
+    for (int j = 0; j < side; ++j)
+    {
+      for (int i = 0; i < side; ++i)
+      {
+        mesh.Vertices.row(id(i, j, k)) << i, j, k;
+      }
+    }
+  }
+  mesh.Cells.resize(n * n * n, 8);
+  int h = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        mesh.Cells.row(h++) << id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1);
+      }
+    }
+  }
+  return mesh;
+}
+
+/// The grid padded, each inner copy moved 1/3 towards the centre and then jittered.
+HexMesh SkewedPaddedGrid(int n, double jitter, int& paddingHexCount)
+{
+  HexMesh mesh = CubeGrid(n);
+  const int hexCount = static_cast<int>(mesh.Cells.rows());
+  const Eigen::RowVector3d centre = Eigen::RowVector3d::Constant(0.5 * n);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> noise(-jitter, jitter);
+  const Points before = mesh.Vertices;
+  HexPaddingResult padding;
+  const Status status = addPaddingLayer(mesh,
+    [&](int v)
+    {
+      const Eigen::RowVector3d p = before.row(v);
+      return Eigen::RowVector3d(p + (centre - p).normalized() / 3.0 +
+        Eigen::RowVector3d(noise(random), noise(random), noise(random)));
+    },
+    padding);
+  PCH_CHECK(status);
+  paddingHexCount = static_cast<int>(mesh.Cells.rows()) - hexCount;
+  return mesh;
+}
+
+double PaddingMean(const HexMesh& mesh, int paddingHexCount)
+{
+  const Eigen::VectorXd q = ComputeHexScaledJacobians(mesh);
+  return q.tail(paddingHexCount).mean();
+}
+} // namespace
+
+int main()
+{
+  int paddingHexCount = 0;
+  const HexMesh skewed = SkewedPaddedGrid(4, 0.12, paddingHexCount);
+  PCH_CHECK(paddingHexCount == 6 * 4 * 4);
+  const Eigen::VectorXd before = ComputeHexScaledJacobians(skewed);
+
+  HexMesh placed = skewed;
+  HexPaddingPlacementResult result;
+  PCH_CHECK(placePaddingCopies(placed, paddingHexCount, HexPaddingPlacementParameters(), result));
+  const Eigen::VectorXd after = ComputeHexScaledJacobians(placed);
+  std::cout << "padding hexes' mean SJ " << result.MeanBefore << " -> " << result.MeanAfter
+            << ", min at the copies " << result.MinBefore << " -> " << result.MinAfter << ", "
+            << result.MovedCount << " copies moved; mesh min " << before.minCoeff() << " -> "
+            << after.minCoeff() << ", inverted " << (before.array() <= 0.0).count() << " -> "
+            << (after.array() <= 0.0).count() << std::endl;
+
+  // Better padding hexes, and no hex around a copy lost its minimum.
+  PCH_CHECK_NEAR(result.MeanBefore, PaddingMean(skewed, paddingHexCount), 1e-12);
+  PCH_CHECK_NEAR(result.MeanAfter, PaddingMean(placed, paddingHexCount), 1e-12);
+  PCH_CHECK(result.MeanAfter > result.MeanBefore + 0.02);
+  PCH_CHECK(result.MinAfter >= result.MinBefore);
+  PCH_CHECK(after.minCoeff() >= before.minCoeff());
+  PCH_CHECK((after.array() <= 0.0).count() <= (before.array() <= 0.0).count());
+  PCH_CHECK(result.MovedCount > 0);
+
+  // Only the inner copies (the padding hexes' top faces) moved.
+  std::vector<bool> isCopy(static_cast<size_t>(placed.Vertices.rows()), false);
+  const int first = static_cast<int>(placed.Cells.rows()) - paddingHexCount;
+  for (int h = first; h < placed.Cells.rows(); ++h)
+  {
+    for (int k = 4; k < 8; ++k)
+    {
+      isCopy[static_cast<size_t>(placed.Cells(h, k))] = true;
+    }
+  }
+  int movedOthers = 0;
+  for (int v = 0; v < placed.Vertices.rows(); ++v)
+  {
+    if (!isCopy[static_cast<size_t>(v)] && placed.Vertices.row(v) != skewed.Vertices.row(v))
+    {
+      ++movedOthers;
+    }
+  }
+  PCH_CHECK(movedOthers == 0);
+
+  // A second placement from the result changes little: it starts from the same mapped points.
+  {
+    HexMesh again = skewed;
+    HexPaddingPlacementParameters params;
+    params.Sweeps = 6;
+    HexPaddingPlacementResult more;
+    PCH_CHECK(placePaddingCopies(again, paddingHexCount, params, more));
+    PCH_CHECK(more.MeanAfter >= result.MeanAfter - 1e-3);
+  }
+
+  // Without padding (0 padding hexes) nothing moves.
+  {
+    HexMesh grid = CubeGrid(2);
+    const Points positions = grid.Vertices;
+    HexPaddingPlacementResult none;
+    PCH_CHECK(placePaddingCopies(grid, 0, HexPaddingPlacementParameters(), none));
+    PCH_CHECK(none.MovedCount == 0);
+    PCH_CHECK(grid.Vertices == positions);
+  }
+
+  // Malformed input is refused.
+  {
+    HexMesh bad = skewed;
+    HexPaddingPlacementResult r;
+    PCH_CHECK(!placePaddingCopies(bad, static_cast<int>(bad.Cells.rows()) + 1, {}, r));
+    PCH_CHECK(!placePaddingCopies(bad, -1, {}, r));
+    // Two boundary vertices claiming one inner copy.
+    HexMesh shared = skewed;
+    const int h = static_cast<int>(shared.Cells.rows()) - 1;
+    shared.Cells(h, 5) = shared.Cells(h, 4);
+    PCH_CHECK(!placePaddingCopies(shared, paddingHexCount, {}, r));
+  }
+  return polycubehex_test::FailureCount();
+}
