@@ -3,6 +3,7 @@
 #include "HexMeshValidity.h"
 
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 
 #include <Eigen/Geometry>
 
@@ -13,39 +14,6 @@ using namespace polycubehex;
 
 namespace
 {
-/// An n x n x n grid of unit cubes in VTK's node order (positive volume).
-HexMesh Grid(int n)
-{
-  const int m = n + 1;
-  auto id = [m](int i, int j, int k) { return i + m * (j + m * k); };
-  HexMesh mesh;
-  mesh.Vertices.resize(m * m * m, 3);
-  for (int k = 0; k < m; ++k)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      for (int i = 0; i < m; ++i)
-      {
-        mesh.Vertices.row(id(i, j, k)) << i, j, k;
-      }
-    }
-  }
-  mesh.Cells.resize(n * n * n, 8);
-  int h = 0;
-  for (int k = 0; k < n; ++k)
-  {
-    for (int j = 0; j < n; ++j)
-    {
-      for (int i = 0; i < n; ++i)
-      {
-        mesh.Cells.row(h++) << id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1);
-      }
-    }
-  }
-  return mesh;
-}
-
 /// Appends the unit cube with minimum corner (x, y, z); corners already in `points` are reused,
 /// so that cubes touching at corners share vertices.
 void AddCube(HexMesh& mesh, std::vector<Eigen::RowVector3d>& points, double x, double y, double z)
@@ -94,7 +62,7 @@ HexMeshValidity Check(const HexMesh& mesh)
 
 void TestValidGrid()
 {
-  const HexMesh mesh = Grid(2);
+  const HexMesh mesh = polycubehex_test::HexCubeGrid(2);
   const HexMeshValidity result = Check(mesh);
   PCH_CHECK(result.IsValid());
   PCH_CHECK(result.HexCount == 8);
@@ -119,7 +87,7 @@ void TestValidGrid()
   PCH_CHECK(inward == 0);
 
   // A bigger grid: (n+1)^3 - (n-1)^3 boundary vertices, still only 8 irregular.
-  const HexMeshValidity big = Check(Grid(4));
+  const HexMeshValidity big = Check(polycubehex_test::HexCubeGrid(4));
   PCH_CHECK(big.IsValid());
   PCH_CHECK(big.BoundaryQuadCount == 6 * 16);
   PCH_CHECK(big.IrregularBoundaryVertexCount == 8);
@@ -127,7 +95,7 @@ void TestValidGrid()
 
 void TestRepeatedVertex()
 {
-  HexMesh mesh = Grid(1);
+  HexMesh mesh = polycubehex_test::HexCubeGrid(1);
   mesh.Cells(0, 6) = mesh.Cells(0, 5); // collapse the edge 5-6
   const HexMeshValidity result = Check(mesh);
   PCH_CHECK(!result.IsValid());
@@ -138,7 +106,7 @@ void TestRepeatedVertex()
 void TestQuadSharedByThree()
 {
   // Two stacked cubes, plus a third hex that also sits on the top of the bottom cube.
-  HexMesh mesh = Grid(1);
+  HexMesh mesh = polycubehex_test::HexCubeGrid(1);
   std::vector<Eigen::RowVector3d> points;
   for (int i = 0; i < mesh.Vertices.rows(); ++i)
   {
@@ -206,7 +174,7 @@ void TestRefusals()
 {
   HexMeshValidity result;
   PCH_CHECK(!checkHexMeshValidity(HexMesh(), result).Ok());
-  HexMesh mesh = Grid(1);
+  HexMesh mesh = polycubehex_test::HexCubeGrid(1);
   mesh.Cells(0, 3) = 99;
   const Status status = checkHexMeshValidity(mesh, result);
   PCH_CHECK(!status.Ok());

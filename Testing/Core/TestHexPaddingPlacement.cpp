@@ -7,6 +7,7 @@
 #include "HexPaddingPlacement.h"
 #include "HexScaledJacobian.h"
 #include "TestAssert.h"
+#include "TestMeshGenerators.h"
 
 #include <cmath>
 #include <iostream>
@@ -16,43 +17,10 @@ using namespace polycubehex;
 
 namespace
 {
-/// An n x n x n grid of unit cubes (VTK order, positive).
-HexMesh CubeGrid(int n)
-{
-  HexMesh mesh;
-  const int side = n + 1;
-  mesh.Vertices.resize(side * side * side, 3);
-  auto id = [side](int i, int j, int k) { return i + side * (j + side * k); };
-  for (int k = 0; k < side; ++k)
-  {
-    for (int j = 0; j < side; ++j)
-    {
-      for (int i = 0; i < side; ++i)
-      {
-        mesh.Vertices.row(id(i, j, k)) << i, j, k;
-      }
-    }
-  }
-  mesh.Cells.resize(n * n * n, 8);
-  int h = 0;
-  for (int k = 0; k < n; ++k)
-  {
-    for (int j = 0; j < n; ++j)
-    {
-      for (int i = 0; i < n; ++i)
-      {
-        mesh.Cells.row(h++) << id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1);
-      }
-    }
-  }
-  return mesh;
-}
-
 /// The grid padded, each inner copy moved 1/3 towards the centre and then jittered.
 HexMesh SkewedPaddedGrid(int n, double jitter, int& paddingHexCount)
 {
-  HexMesh mesh = CubeGrid(n);
+  HexMesh mesh = polycubehex_test::HexCubeGrid(n);
   const int hexCount = static_cast<int>(mesh.Cells.rows());
   const Eigen::RowVector3d centre = Eigen::RowVector3d::Constant(0.5 * n);
   std::mt19937 random(7);
@@ -137,7 +105,7 @@ int main()
 
   // Without padding (0 padding hexes) nothing moves.
   {
-    HexMesh grid = CubeGrid(2);
+    HexMesh grid = polycubehex_test::HexCubeGrid(2);
     const Points positions = grid.Vertices;
     HexPaddingPlacementResult none;
     PCH_CHECK(placePaddingCopies(grid, 0, HexPaddingPlacementParameters(), none));

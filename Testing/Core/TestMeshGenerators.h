@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Solids and surfaces generated for the core tests (header-only, shared so that each generator
 // is written once): swept solid and hollow tori, a torus one tet thick, icospheres, tori, single
-// and glued tets, and the merge of two surfaces, plus two small helpers used with them.
+// and glued tets, the merge of two surfaces, grids of tets and of hexes, plus small helpers.
 #pragma once
 
 #include "MeshTypes.h"
@@ -435,6 +435,28 @@ inline TetMesh CubeGrid(int n)
           }
           ++t;
         }
+  return mesh;
+}
+
+/// An n x n x n grid of unit hexes with its minimum corner at the origin, in VTK's node order
+/// (positive volume).
+inline polycubehex::HexMesh HexCubeGrid(int n)
+{
+  const int m = n + 1;
+  auto id = [m](int i, int j, int k) { return i + m * (j + m * k); };
+  polycubehex::HexMesh mesh;
+  mesh.Vertices.resize(m * m * m, 3);
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i)
+        mesh.Vertices.row(id(i, j, k)) << i, j, k;
+  mesh.Cells.resize(n * n * n, 8);
+  int h = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        mesh.Cells.row(h++) << id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1);
   return mesh;
 }
 
