@@ -270,6 +270,11 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "UnflattenedVertexCount", result.UnflattenedVertexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MaxPlaneDeviation", result.MaxPlaneDeviation);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "CreaseTurnBack", result.CreaseTurnBack);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "CreaseTurnBackBeforeFlattening", result.CreaseTurnBackBeforeFlattening);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "TurnedBackCreaseCount", result.TurnedBackCreaseCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
   vtkNew<vtkDoubleArray> translations; // t_c of x_plus = Pi_c x_minus + t_c; none when uncut
   translations->SetName(names::CutTranslations);

@@ -26,7 +26,10 @@
  * carried to split tets), and field data `CornerCount`, `InvertedTetCount`, `PolycubeResidual`,
  * `Guidance`, `ChartCount`, `PolycubeSeconds`, `UnflattenedVertexCount` (vertices left off their
  * chart planes because snapping them would invert a tet; 0 means every chart is exactly flat) and
- * `MaxPlaneDeviation` (the largest distance of a chart vertex from its plane, input units).
+ * `MaxPlaneDeviation` (the largest distance of a chart vertex from its plane, input units),
+ * `CreaseTurnBack` and `CreaseTurnBackBeforeFlattening` (how far the mesh path of a polycube
+ * edge runs back along the edge's axis, the largest over the edges, input units; 0 when every
+ * edge is monotone) and `TurnedBackCreaseCount` (edges turning back over 1e-3 of the diagonal).
  * Output port 1: the polycube boundary with cell arrays `PolycubeLabel`, `ChartId`.
  */
 #ifndef vtkPolycubeDeformFilter_h

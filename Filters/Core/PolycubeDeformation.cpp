@@ -4,6 +4,7 @@
 #include "DisjointSets.h"
 #include "MemoryBudget.h"
 #include "PolycubeCharts.h"
+#include "PolycubeCreases.h"
 #include "PolycubeCutMesh.h"
 #include "PolycubeEnergy.h"
 #include "PolycubeNewton.h"
@@ -930,6 +931,9 @@ Status ComputePolycube(const TetMesh& input,
     }
     adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
     charts = PlaneCharts(mesh, topology.BoundaryFaces, labels);
+    out.CreaseTurnBackBeforeFlattening = frame.Scale *
+      MaxCreaseTurnBack(
+        ComputePolycubeCreases(mesh.X, topology.BoundaryFaces, adjacency, charts), 0.0);
     // The flattening of an earlier labelling attempt counts as flattening, not as labelling.
     out.LabelingSeconds = SecondsSince(labelStart) - out.FlatteningSeconds;
     if (!ReportProgress(progress, 0.82))
@@ -1491,6 +1495,14 @@ Status ComputePolycube(const TetMesh& input,
           out.ChartPlane[static_cast<size_t>(chart)]));
     }
   }
+  // Unit-diagonal positions: the tolerance is 1e-3 of the diagonal.
+  out.CreaseTurnBack = frame.Scale *
+    MaxCreaseTurnBack(ComputePolycubeCreases(mesh.X,
+                        topology.BoundaryFaces,
+                        BoundaryAdjacency(mesh, topology.BoundaryFaces),
+                        charts),
+      1e-3,
+      &out.TurnedBackCreaseCount);
   out.FoldedFaceCount = 0;
   for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
   {

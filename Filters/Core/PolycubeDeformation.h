@@ -177,6 +177,12 @@ struct PolycubeResult
   /// Vertices left off their chart planes because snapping them would invert a tet or fold a
   /// chart face (a labelling the connectivity cannot realise); 0 means every chart is exact.
   int UnflattenedVertexCount = 0;
+  /// Largest turn-back of a crease (PolycubeCreases.h: how far the mesh path of a polycube edge
+  /// runs back along the edge's axis, folding the faces between its turning points), in input
+  /// units: in the shape the charts were labelled on, and in the result. 0 for monotone creases.
+  double CreaseTurnBackBeforeFlattening = 0.0;
+  double CreaseTurnBack = 0.0;
+  int TurnedBackCreaseCount = 0; ///< creases of the result turning back over 1e-3 of the diagonal
   /// Boundary faces folded over their label's direction when the flattening started (the
   /// optimisation leaves a few where tiny charts were merged), and at the end (0 on success:
   /// the hex extraction refuses a folded face).

@@ -208,6 +208,11 @@ int main(int argc, char* argv[])
     result.MaxPlaneDeviation,
     result.FoldedFaceCount,
     result.InitiallyFoldedFaceCount);
+  std::printf("crease turn-back %.3g before flattening, %.3g after (input units), %d edges "
+              "turning back over 1e-3 of the diagonal\n",
+    result.CreaseTurnBackBeforeFlattening,
+    result.CreaseTurnBack,
+    result.TurnedBackCreaseCount);
   std::printf("faces relabelled: %d by the clean-up, %d because the flattening collapsed them\n",
     result.RelabelledFaceCount,
     result.CollapseRelabelledFaceCount);

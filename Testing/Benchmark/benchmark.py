@@ -161,6 +161,10 @@ def run_guidance(name, tets, source, guidance, repeat):
     # would invert a tet), and the largest deviation in units of the polycube's diagonal.
     row["off-plane vertices"] = int(fields.GetArray("UnflattenedVertexCount").GetTuple1(0))
     row["plane dev / d"] = fields.GetArray("MaxPlaneDeviation").GetTuple1(0) / diagonal_of(polycube)
+    # Polycube edges whose mesh path runs back along the edge's axis (non-monotone creases):
+    # the faces between the turning points fold, which is what leaves vertices off their planes.
+    row["turned-back edges"] = int(fields.GetArray("TurnedBackCreaseCount").GetTuple1(0))
+    row["turn-back / d"] = fields.GetArray("CreaseTurnBack").GetTuple1(0) / diagonal_of(polycube)
 
     # §4.3: hexes at the paper's hex count for this method where it has the model (l1 rows for
     # Uniform, closed-form rows for FrameField), else 10,000; smoothing off (the paper has
@@ -326,7 +330,8 @@ def main():
                "cut areas / d^2", "cut s", "frame s", "align deg", "singular", "max depth",
                "transitions"]
     hex_columns = ["model", "guidance", "tets", "polycube s", "corners", "inverted tets",
-                   "residual", "off-plane vertices", "plane dev / d", "target",
+                   "residual", "off-plane vertices", "plane dev / d", "turned-back edges",
+                   "turn-back / d", "target",
                    "rounding inverted tets", "hexes", "SJ min/mean",
                    "dist mean/H", "inverted hexes", "valid", "hex s", "SJ min/mean smooth",
                    "dist mean/H smooth", "inverted hexes smooth", "valid smooth", "hex s smooth"]

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// ComputePolycubeCreases (PolycubeCreases.h): a cube's surface has 12 creases, each a monotone
+// path from corner to corner along the axis of neither of its charts; pushing one crease vertex
+// past the end of its edge makes that crease, and only that one, turn back by exactly the
+// overshoot.
+#include "PolycubeCharts.h"
+#include "PolycubeCreases.h"
+#include "TestAssert.h"
+#include "TestMeshGenerators.h"
+#include "TetGeometry.h"
+
+#include <cmath>
+#include <iostream>
+
+using namespace polycubehex;
+
+namespace
+{
+bool IsCubeCorner(const Points& x, int v)
+{
+  return (x.row(v).cwiseAbs().array() > 1.0 - 1e-12).all();
+}
+} // namespace
+
+int main()
+{
+  const int n = 2;
+  TetMesh cube = polycubehex_test::CubeGrid(n);
+  TetTopology topology;
+  ComputeTetTopology(static_cast<int>(cube.Vertices.rows()), cube.Cells, topology);
+  const Triangles& faces = topology.BoundaryFaces;
+  const Triangles adjacency = ComputeFaceAdjacency(static_cast<int>(cube.Vertices.rows()), faces);
+  const PolycubeCharts charts =
+    ComputePolycubeCharts(cube.Vertices, faces, adjacency, PolycubeFaceLabels(cube.Vertices, faces));
+  PCH_CHECK(charts.Count() == 6);
+
+  const std::vector<PolycubeCrease> creases =
+    ComputePolycubeCreases(cube.Vertices, faces, adjacency, charts);
+  PCH_CHECK(creases.size() == 12);
+  for (const PolycubeCrease& crease : creases)
+  {
+    const int axisA = charts.ChartLabel[static_cast<size_t>(crease.ChartA)] / 2;
+    const int axisB = charts.ChartLabel[static_cast<size_t>(crease.ChartB)] / 2;
+    PCH_CHECK(axisA != axisB && crease.Axis != axisA && crease.Axis != axisB);
+    PCH_CHECK(static_cast<int>(crease.Vertices.size()) == n + 1);
+    PCH_CHECK(IsCubeCorner(cube.Vertices, crease.Vertices.front()));
+    PCH_CHECK(IsCubeCorner(cube.Vertices, crease.Vertices.back()));
+    PCH_CHECK(std::abs(crease.NetLength - 2.0) < 1e-12);
+    PCH_CHECK(crease.TurnBack < 1e-12);
+  }
+  int above = -1;
+  PCH_CHECK(MaxCreaseTurnBack(creases, 1e-9, &above) < 1e-12 && above == 0);
+
+  // The middle vertex of the crease x = y = 1 goes to z = 1.3, 0.3 past the corner at z = 1:
+  // the path z = -1, 1.3, 1 runs 2.6 for a net 2, so it turns back 0.3.
+  Points moved = cube.Vertices;
+  int middle = -1;
+  for (Eigen::Index v = 0; v < moved.rows(); ++v)
+  {
+    if (std::abs(moved(v, 0) - 1.0) < 1e-12 && std::abs(moved(v, 1) - 1.0) < 1e-12 &&
+      std::abs(moved(v, 2)) < 1e-12)
+    {
+      middle = static_cast<int>(v);
+    }
+  }
+  PCH_CHECK(middle >= 0);
+  moved(middle, 2) = 1.3;
+  const std::vector<PolycubeCrease> bent = ComputePolycubeCreases(moved, faces, adjacency, charts);
+  PCH_CHECK(bent.size() == 12);
+  const double largest = MaxCreaseTurnBack(bent, 1e-9, &above);
+  std::cout << "turn-back after the move " << largest << " on " << above << " crease(s)"
+            << std::endl;
+  PCH_CHECK(std::abs(largest - 0.3) < 1e-12);
+  PCH_CHECK(above == 1);
+  for (const PolycubeCrease& crease : bent)
+  {
+    if (crease.TurnBack > 1e-9)
+    {
+      PCH_CHECK(crease.Axis == 2);
+      PCH_CHECK(crease.Vertices[1] == middle);
+      PCH_CHECK(std::abs(crease.NetLength - 2.0) < 1e-12);
+    }
+  }
+  return 0;
+}
