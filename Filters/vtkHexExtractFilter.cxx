@@ -296,6 +296,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     fields, "InvertedHexCountAfterUntangling", result.InvertedHexCountAfterUntangling);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RemovedDoubletHexCount", result.RemovedDoubletHexCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "RemovedPinchHexCount", result.RemovedPinchHexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "UntanglingSeconds", result.UntanglingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "SmoothingSeconds", result.SmoothingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields,

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <map>
+#include <numeric>
+#include <utility>
 #include <vector>
 
 namespace polycubehex
@@ -301,6 +304,251 @@ int RemoveOverlappingHexes(HexMesh& mesh, const Eigen::VectorXd& quality)
   {
     mesh.Cells = without().Cells;
   }
+  return count;
+}
+
+namespace
+{
+/// Combinatorial defects of `mesh` (INT_MAX when it cannot be checked), and its validity.
+int CountDefects(const HexMesh& mesh, HexMeshValidity& validity)
+{
+  if (!checkHexMeshValidity(mesh, validity))
+  {
+    return std::numeric_limits<int>::max();
+  }
+  return validity.OverSharedQuadCount + validity.MisorientedQuadCount +
+    validity.NonManifoldBoundaryEdgeCount + validity.NonManifoldBoundaryVertexCount;
+}
+
+/// The vertices of boundary edges not used by exactly two boundary quads, and of boundary
+/// vertices whose quads form more than one fan (connected through edges at the vertex).
+std::vector<int> PinchVertices(int vertexCount, const Quads& boundary)
+{
+  std::map<std::pair<int, int>, int> edgeUses;
+  for (Eigen::Index q = 0; q < boundary.rows(); ++q)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int a = boundary(q, k);
+      const int b = boundary(q, (k + 1) % 4);
+      ++edgeUses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  std::vector<char> pinched(static_cast<size_t>(vertexCount), 0);
+  for (const auto& entry : edgeUses)
+  {
+    if (entry.second != 2)
+    {
+      pinched[static_cast<size_t>(entry.first.first)] = 1;
+      pinched[static_cast<size_t>(entry.first.second)] = 1;
+    }
+  }
+  // Fans: at each vertex, its quads joined when they share one of the vertex's edges.
+  std::vector<std::vector<int>> vertexQuads(static_cast<size_t>(vertexCount));
+  for (Eigen::Index q = 0; q < boundary.rows(); ++q)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      vertexQuads[static_cast<size_t>(boundary(q, k))].push_back(static_cast<int>(q));
+    }
+  }
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    const auto& quads = vertexQuads[static_cast<size_t>(v)];
+    if (quads.size() < 2 || pinched[static_cast<size_t>(v)])
+    {
+      continue;
+    }
+    // The other end of each quad's two edges at v.
+    auto neighbours = [&](int q)
+    {
+      int k = 0;
+      while (boundary(q, k) != v)
+      {
+        ++k;
+      }
+      return std::array<int, 2>{ boundary(q, (k + 1) % 4), boundary(q, (k + 3) % 4) };
+    };
+    std::vector<int> fan(quads.size());
+    std::iota(fan.begin(), fan.end(), 0);
+    auto root = [&fan](int i)
+    {
+      while (fan[static_cast<size_t>(i)] != i)
+      {
+        i = fan[static_cast<size_t>(i)] = fan[static_cast<size_t>(fan[static_cast<size_t>(i)])];
+      }
+      return i;
+    };
+    for (size_t i = 0; i < quads.size(); ++i)
+    {
+      for (size_t j = i + 1; j < quads.size(); ++j)
+      {
+        const auto a = neighbours(quads[i]);
+        const auto b = neighbours(quads[j]);
+        if (a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1])
+        {
+          fan[static_cast<size_t>(root(static_cast<int>(i)))] = root(static_cast<int>(j));
+        }
+      }
+    }
+    int fans = 0;
+    for (size_t i = 0; i < quads.size(); ++i)
+    {
+      fans += root(static_cast<int>(i)) == static_cast<int>(i) ? 1 : 0;
+    }
+    pinched[static_cast<size_t>(v)] = fans > 1 ? 1 : 0;
+  }
+  std::vector<int> vertices;
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    if (pinched[static_cast<size_t>(v)])
+    {
+      vertices.push_back(v);
+    }
+  }
+  return vertices;
+}
+} // namespace
+
+int RemovePinchingHexes(HexMesh& mesh, const Eigen::VectorXd& quality, std::vector<int>* removed)
+{
+  if (removed)
+  {
+    removed->clear();
+  }
+  const int hexCount = static_cast<int>(mesh.Cells.rows());
+  const int vertexCount = static_cast<int>(mesh.Vertices.rows());
+  std::vector<char> remove(static_cast<size_t>(hexCount), 0);
+  HexMeshValidity validity;
+  int current = CountDefects(mesh, validity);
+  if (current == 0 || current == std::numeric_limits<int>::max())
+  {
+    return 0;
+  }
+  std::vector<int> uses = VertexUses(mesh);
+  // The hexes left that touch a pinch of `state`, worst first; empty when there are none or
+  // too many to mend hex by hex.
+  auto candidatesOf = [&](const HexMeshValidity& state)
+  {
+    std::vector<int> candidates;
+    const std::vector<int> pinched = PinchVertices(vertexCount, state.BoundaryQuads);
+    if (pinched.size() > 64)
+    {
+      return candidates;
+    }
+    std::vector<char> isPinched(static_cast<size_t>(vertexCount), 0);
+    for (int v : pinched)
+    {
+      isPinched[static_cast<size_t>(v)] = 1;
+    }
+    for (int h = 0; h < hexCount; ++h)
+    {
+      for (int k = 0; k < 8 && !remove[static_cast<size_t>(h)]; ++k)
+      {
+        if (isPinched[static_cast<size_t>(mesh.Cells(h, k))])
+        {
+          candidates.push_back(h);
+          break;
+        }
+      }
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+      [&quality](int a, int b) { return quality[a] < quality[b]; });
+    return candidates;
+  };
+  // Removes h (false when that would leave a vertex unused), or puts it back.
+  auto take = [&](int h)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      if (uses[static_cast<size_t>(mesh.Cells(h, k))] <= 1)
+      {
+        return false;
+      }
+    }
+    remove[static_cast<size_t>(h)] = 1;
+    for (int k = 0; k < 8; ++k)
+    {
+      --uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+    return true;
+  };
+  auto putBack = [&](int h)
+  {
+    remove[static_cast<size_t>(h)] = 0;
+    for (int k = 0; k < 8; ++k)
+    {
+      ++uses[static_cast<size_t>(mesh.Cells(h, k))];
+    }
+  };
+  // One removal that lowers the defects, else a pair (a removal often moves a pinch to the
+  // next cube of a diagonal chain: the second one then mends it).
+  for (int round = 0; round < 16 && current > 0; ++round)
+  {
+    bool mended = false;
+    const std::vector<int> candidates = candidatesOf(validity);
+    for (size_t i = 0; i < candidates.size() && !mended; ++i)
+    {
+      const int h = candidates[i];
+      if (!take(h))
+      {
+        continue;
+      }
+      HexMeshValidity after;
+      const int defects = CountDefects(WithoutHexes(mesh, remove), after);
+      if (defects < current)
+      {
+        current = defects;
+        validity = std::move(after);
+        mended = true;
+        break;
+      }
+      if (defects == current)
+      {
+        for (const int second : candidatesOf(after))
+        {
+          if (!take(second))
+          {
+            continue;
+          }
+          HexMeshValidity pair;
+          const int pairDefects = CountDefects(WithoutHexes(mesh, remove), pair);
+          if (pairDefects < current)
+          {
+            current = pairDefects;
+            validity = std::move(pair);
+            mended = true;
+            break;
+          }
+          putBack(second);
+        }
+      }
+      if (!mended)
+      {
+        putBack(h);
+      }
+    }
+    if (!mended)
+    {
+      break;
+    }
+  }
+  const int count = static_cast<int>(std::count(remove.begin(), remove.end(), 1));
+  if (count == 0)
+  {
+    return 0;
+  }
+  if (removed)
+  {
+    for (int h = 0; h < hexCount; ++h)
+    {
+      if (remove[static_cast<size_t>(h)])
+      {
+        removed->push_back(h);
+      }
+    }
+  }
+  mesh.Cells = WithoutHexes(mesh, remove).Cells;
   return count;
 }
 

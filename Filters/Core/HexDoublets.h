@@ -38,4 +38,15 @@ int RemoveBoundaryDoublets(HexMesh& mesh,
 /// unused. Returns the hexes removed.
 int RemoveOverlappingHexes(HexMesh& mesh, const Eigen::VectorXd& quality);
 
+/// Removes hexes where the boundary pinches: an edge of four boundary quads (two hexes touching
+/// along an edge only) or a vertex with two fans of boundary quads. The lattice of a rounding
+/// that left tets inverted can have them (fertility closed form at 16,247 hexes), and a padding
+/// layer over a pinched edge gives a quad of four hexes. Greedily, worst `quality` first among
+/// the hexes at the pinches, each removal kept only when it lowers the number of combinatorial
+/// defects and leaves no vertex unused; repeated while that mends more. Returns the hexes
+/// removed; `removed` (if set) receives their indices in `mesh` before the removal, ascending.
+int RemovePinchingHexes(HexMesh& mesh,
+  const Eigen::VectorXd& quality,
+  std::vector<int>* removed = nullptr);
+
 } // namespace polycubehex

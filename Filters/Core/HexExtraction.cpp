@@ -102,6 +102,52 @@ Status CheckInput(const PolycubeTetMesh& input)
   }
   return Status::Success();
 }
+
+/// Drops the per-hex rows of the hexes `removed` (ascending indices before the removal) from
+/// `lattice`, whose Mesh.Cells has already lost them.
+void RemoveLatticeHexRows(LatticeHexMesh& lattice, const std::vector<int>& removed)
+{
+  if (removed.empty())
+  {
+    return;
+  }
+  const Eigen::Index before = lattice.HexCenters.rows();
+  std::vector<char> gone(static_cast<size_t>(before), 0);
+  for (int h : removed)
+  {
+    gone[static_cast<size_t>(h)] = 1;
+  }
+  auto keepRows = [&](Points& rows)
+  {
+    if (rows.rows() != before)
+    {
+      return;
+    }
+    Eigen::Index kept = 0;
+    for (Eigen::Index h = 0; h < before; ++h)
+    {
+      if (!gone[static_cast<size_t>(h)])
+      {
+        rows.row(kept++) = rows.row(h);
+      }
+    }
+    rows.conservativeResize(kept, Eigen::NoChange);
+  };
+  keepRows(lattice.HexCenters);
+  keepRows(lattice.HexOrigins);
+  if (lattice.HexCornerRotations.size() == static_cast<size_t>(8 * before))
+  {
+    std::vector<Eigen::Matrix3i> rotations;
+    for (Eigen::Index h = 0; h < before; ++h)
+    {
+      for (int k = 0; k < 8 && !gone[static_cast<size_t>(h)]; ++k)
+      {
+        rotations.push_back(lattice.HexCornerRotations[static_cast<size_t>(8 * h + k)]);
+      }
+    }
+    lattice.HexCornerRotations = std::move(rotations);
+  }
+}
 } // namespace
 
 Status extractHexMesh(const PolycubeTetMesh& input,
@@ -388,6 +434,14 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       " lattice points on the cuts did not match across them; the hex mesh may have seams");
   }
   result.ExtractionSeconds = Seconds(start);
+  // A pinched boundary (two cubes touching along an edge only, where the rounding left tets
+  // inverted) cannot be padded: the padding quad over the edge would have four hexes.
+  {
+    std::vector<int> pinching;
+    result.RemovedPinchHexCount =
+      RemovePinchingHexes(lattice.Mesh, ComputeHexScaledJacobians(lattice.Mesh), &pinching);
+    RemoveLatticeHexRows(lattice, pinching);
+  }
 
   // 4. Padding layer. The inner copy of a boundary vertex moves PaddingThickness hexes inwards
   //    along each of its charts' normals, in the lattice, and is mapped through the tets around

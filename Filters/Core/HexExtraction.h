@@ -161,6 +161,8 @@ struct HexExtractionResult
   int ReleasedBoundaryVertexCount = 0;
   /// Hexes removed as doublets or overlaps (HexExtractionParameters::RemoveDoublets).
   int RemovedDoubletHexCount = 0;
+  /// Lattice hexes removed before the padding where the boundary pinched (RemovePinchingHexes).
+  int RemovedPinchHexCount = 0;
 
   /// Wall seconds per stage.
   double RoundingSeconds = 0.0;
