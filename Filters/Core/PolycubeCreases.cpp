@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -125,6 +126,72 @@ std::vector<PolycubeCrease> ComputePolycubeCreases(const Points& x,
     }
   }
   return creases;
+}
+
+int ShaveTurnedBackCreases(const Points& x,
+  const Triangles& faces,
+  const PolycubeCharts& charts,
+  const std::vector<PolycubeCrease>& creases,
+  double tolerance,
+  std::vector<int>& labels)
+{
+  // vertex -> its faces
+  std::vector<std::vector<int>> vertexFaces(static_cast<size_t>(x.rows()));
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      vertexFaces[static_cast<size_t>(faces(f, k))].push_back(static_cast<int>(f));
+    }
+  }
+  const std::vector<int> original = labels;
+  int relabelled = 0;
+  for (const PolycubeCrease& crease : creases)
+  {
+    if (crease.TurnBack <= tolerance || crease.Vertices.front() == crease.Vertices.back())
+    {
+      continue;
+    }
+    const double direction =
+      x(crease.Vertices.back(), crease.Axis) >= x(crease.Vertices.front(), crease.Axis) ? 1.0 : -1.0;
+    double farthest = -std::numeric_limits<double>::infinity();
+    std::vector<int> around; // faces of the two charts at the vertices behind
+    for (int v : crease.Vertices)
+    {
+      const double position = direction * x(v, crease.Axis);
+      farthest = std::max(farthest, position);
+      if (position >= farthest - tolerance)
+      {
+        continue;
+      }
+      for (int f : vertexFaces[static_cast<size_t>(v)])
+      {
+        const int chart = charts.FaceChart[static_cast<size_t>(f)];
+        if (chart == crease.ChartA || chart == crease.ChartB)
+        {
+          around.push_back(f);
+        }
+      }
+    }
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    int inA = 0;
+    for (int f : around)
+    {
+      inA += charts.FaceChart[static_cast<size_t>(f)] == crease.ChartA ? 1 : 0;
+    }
+    const int winner = 2 * inA >= static_cast<int>(around.size()) ? crease.ChartA : crease.ChartB;
+    const int label = charts.ChartLabel[static_cast<size_t>(winner)];
+    for (int f : around)
+    {
+      if (labels[static_cast<size_t>(f)] != label)
+      {
+        relabelled += original[static_cast<size_t>(f)] == labels[static_cast<size_t>(f)] ? 1 : 0;
+        labels[static_cast<size_t>(f)] = label;
+      }
+    }
+  }
+  return relabelled;
 }
 
 double MaxCreaseTurnBack(const std::vector<PolycubeCrease>& creases,

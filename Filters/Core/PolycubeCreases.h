@@ -42,6 +42,19 @@ std::vector<PolycubeCrease> ComputePolycubeCreases(const Points& x,
   const Triangles& adjacency,
   const PolycubeCharts& charts);
 
+/// Relabels where creases turn back: walking each open crease from its start towards its end
+/// (the direction of its net change), a vertex behind the farthest point reached so far (by more
+/// than `tolerance`) lies on a part that runs back. The faces of the crease's two charts around
+/// such vertices all take the label of the chart that holds most of them, which removes the
+/// thinner of the tooth and the pocket that the crease wraps around. Creases with TurnBack up to
+/// `tolerance` are left alone. Returns the number of faces relabelled.
+int ShaveTurnedBackCreases(const Points& x,
+  const Triangles& faces,
+  const PolycubeCharts& charts,
+  const std::vector<PolycubeCrease>& creases,
+  double tolerance,
+  std::vector<int>& labels);
+
 /// Largest TurnBack over `creases` (0 if none), and how many exceed `tolerance`.
 double MaxCreaseTurnBack(const std::vector<PolycubeCrease>& creases,
   double tolerance,

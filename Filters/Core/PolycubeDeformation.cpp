@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -471,6 +472,125 @@ int RelabelCollapsedFaces(const PolycubeEnergy& energy,
   return relabelled;
 }
 
+/// Creases that turn back (PolycubeCreases.h) fold when flattened. Each round shaves them
+/// (ShaveTurnedBackCreases, then the chart clean-up `cleanUp`) and deforms the shape again for a
+/// few Newton iterations with the continuation's last weights, every face's alignment pulling
+/// it onto its own label's axis, and the faces that changed label turned to its side by the
+/// unfolding penalty (the alignment alone would take either side). A shaved fold can reappear
+/// next to it, so the best state seen is kept: fewest creases turning back, then the smallest
+/// turn-back.
+Status RepairTurnedBackCreases(WorkMesh& mesh,
+  const Triangles& faces,
+  const Triangles& adjacency,
+  const PolycubeEnergyWeights& lastWeights,
+  const PolycubeParameters& params,
+  NewtonSettings::LinearSolverType solverType,
+  const std::function<int()>& cleanUp,
+  std::vector<int>& labels,
+  PolycubeResult& out)
+{
+  struct State
+  {
+    int Count = 0;
+    double Largest = 0.0;
+    bool operator<(const State& other) const
+    {
+      return this->Count < other.Count ||
+        (this->Count == other.Count && this->Largest < other.Largest);
+    }
+  };
+  std::vector<PolycubeCrease> creases;
+  auto measure = [&]()
+  {
+    creases = ComputePolycubeCreases(mesh.X, faces, adjacency, PlaneCharts(mesh, faces, labels));
+    State state;
+    state.Largest = MaxCreaseTurnBack(creases, params.MonotoneRepairTolerance, &state.Count);
+    return state;
+  };
+  State best = measure();
+  if (best.Count == 0 || params.MonotoneRepairRounds <= 0)
+  {
+    return Status::Success();
+  }
+  const std::vector<int> entryLabels = labels;
+  std::vector<int> bestLabels = labels;
+  Points bestX = mesh.X;
+  PolycubeEnergy energy(mesh.Rest, mesh.Cells, faces);
+  const VariableReduction everyCoordinate = VariableReduction::Identity(mesh.VertexCount());
+  PolycubeNewtonSolver solver(energy, everyCoordinate); // keeps references to both
+  for (int round = 0; round < params.MonotoneRepairRounds; ++round)
+  {
+    const std::vector<int> before = labels;
+    const int shaved = ShaveTurnedBackCreases(
+      mesh.X, faces, PlaneCharts(mesh, faces, labels), creases, params.MonotoneRepairTolerance, labels);
+    if (shaved == 0)
+    {
+      break;
+    }
+    cleanUp();
+    out.ShavedFaceCount += shaved;
+    ++out.MonotoneRepairRounds;
+    std::vector<int> turned(labels.size(), -1);
+    for (size_t f = 0; f < labels.size(); ++f)
+    {
+      turned[f] = labels[f] != before[f] ? labels[f] : -1;
+    }
+    energy.SetAlignmentLabels(labels);
+    energy.SetUnfoldFaces(turned);
+    PolycubeEnergyWeights weights = lastWeights;
+    weights.FaceUnfold = weights.Alignment;
+    weights.FaceBarrierThreshold = params.BarrierThreshold;
+    energy.SetWeights(weights);
+    NewtonSettings settings;
+    settings.LinearSolver = solverType;
+    settings.MaxIterations = params.MonotoneRepairIterations;
+    NewtonStats stats;
+    Eigen::VectorXd x = Flat(mesh.X);
+    const Status status = solver.Minimize(x, settings, stats);
+    if (!status)
+    {
+      return status;
+    }
+    out.Iterations += stats.Iterations;
+    mesh.X = Unflat(x);
+    const State state = measure();
+    if (state < best)
+    {
+      best = state;
+      bestLabels = labels;
+      bestX = mesh.X;
+    }
+    if (best.Count == 0)
+    {
+      break;
+    }
+  }
+  labels = bestLabels;
+  mesh.X = bestX;
+  // The rounds take few iterations each (the shaving only needs the folds to move); the kept
+  // state then settles under its labels as long as a continuation round.
+  std::vector<int> turned(labels.size(), -1);
+  for (size_t f = 0; f < labels.size(); ++f)
+  {
+    turned[f] = labels[f] != entryLabels[f] ? labels[f] : -1;
+  }
+  energy.SetAlignmentLabels(labels);
+  energy.SetUnfoldFaces(turned);
+  NewtonSettings settings;
+  settings.LinearSolver = solverType;
+  settings.MaxIterations = params.IterationsPerRound;
+  NewtonStats stats;
+  Eigen::VectorXd x = Flat(mesh.X);
+  const Status status = solver.Minimize(x, settings, stats);
+  if (!status)
+  {
+    return status;
+  }
+  out.Iterations += stats.Iterations;
+  mesh.X = Unflat(x);
+  return Status::Success();
+}
+
 /// Fang et al. §4.1: the map whose gradient best fits the frame field (eq. 7, the Poisson
 /// reconstruction), here minimised with the inversion barrier so that the start of the l1 stage
 /// keeps every tet positive. It starts from the rest shape turned by the mean frame rotation.
@@ -706,6 +826,7 @@ Status ComputePolycube(const TetMesh& input,
     ? NewtonSettings::LinearSolverType::Direct
     : NewtonSettings::LinearSolverType::BlockPcg;
   double finalBarrier = params.BarrierWeight;
+  PolycubeEnergyWeights lastWeights; // of the continuation's last round
   {
     PolycubeEnergy energy(
       mesh.Rest, mesh.Cells, topology.BoundaryFaces, NormalPairsAcrossCuts(mesh, topology, params.NormalDifferenceAcrossCuts));
@@ -739,6 +860,7 @@ Status ComputePolycube(const TetMesh& input,
       weights.Barrier = params.BarrierWeight * std::max(1.0, weight);
       weights.BarrierThreshold = barrierThreshold;
       finalBarrier = weights.Barrier;
+      lastWeights = weights;
       energy.SetWeights(weights);
       NewtonSettings settings;
       settings.LinearSolver = solverType;
@@ -824,6 +946,15 @@ Status ComputePolycube(const TetMesh& input,
       labels);
   };
   out.RelabelledFaceCount = cleanUpLabels();
+  if (!closedForm && out.Rounds > 0)
+  {
+    status = RepairTurnedBackCreases(
+      mesh, topology.BoundaryFaces, adjacency, lastWeights, params, solverType, cleanUpLabels, labels, out);
+    if (!status)
+    {
+      return Status::Failure("ComputePolycube: " + status.Message());
+    }
+  }
   // Labels that cannot be flattened (a tongue of one chart squeezed between two sides of
   // another) show up as faces the penalised flattening collapses; they take the neighbouring
   // chart's label and the flattening starts again from the deformed positions.

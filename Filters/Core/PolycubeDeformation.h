@@ -115,6 +115,14 @@ struct PolycubeParameters
   /// flattening restarts, at most this many times (0: keep the labels and release the vertices).
   int CollapseRelabelAttempts = 2;
   double CollapseAreaRatio = 1e-2;
+  /// Uniform guidance: rounds of crease repair after labelling. A crease whose mesh path runs
+  /// back along its axis by more than MonotoneRepairTolerance (a fraction of the diagonal)
+  /// would fold when flattened; its charts' faces around the part that runs back take one label
+  /// (ShaveTurnedBackCreases) and the shape is deformed again with every face pulled onto its
+  /// label's axis. 0: off.
+  int MonotoneRepairRounds = 6;
+  double MonotoneRepairTolerance = 1e-3;
+  int MonotoneRepairIterations = 3; ///< Newton iterations of each repair round's deformation
   /// Flattening: anchor penalty rounds (weight x10 each, from 1e3 times the final barrier
   /// weight) before the planes become hard.
   int FlattenRounds = 8;
@@ -183,6 +191,8 @@ struct PolycubeResult
   double CreaseTurnBackBeforeFlattening = 0.0;
   double CreaseTurnBack = 0.0;
   int TurnedBackCreaseCount = 0; ///< creases of the result turning back over 1e-3 of the diagonal
+  int MonotoneRepairRounds = 0;  ///< crease repair rounds run (PolycubeParameters)
+  int ShavedFaceCount = 0;       ///< faces they relabelled
   /// Boundary faces folded over their label's direction when the flattening started (the
   /// optimisation leaves a few where tiny charts were merged), and at the end (0 on success:
   /// the hex extraction refuses a folded face).

@@ -15,6 +15,17 @@ namespace polycubehex
 
 namespace
 {
+/// The axis a face's alignment term leaves out (AlignmentLabel), or -1.
+int AlignmentAxis(const std::vector<int>& labels, int face)
+{
+  if (labels.empty())
+  {
+    return -1;
+  }
+  const int label = labels[static_cast<size_t>(face)];
+  return label >= 0 ? label / 2 : -1;
+}
+
 
 Eigen::Matrix3d Cross(const Eigen::Vector3d& v)
 {
@@ -627,9 +638,13 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
     const Eigen::Vector3d& uf = u[static_cast<size_t>(f)] =
       0.5 * e1[static_cast<size_t>(f)].cross(e2[static_cast<size_t>(f)]);
     const double norm2 = uf.squaredNorm();
+    const int skipped = AlignmentAxis(this->AlignmentLabel, f);
     for (int i = 0; i < 3; ++i)
     {
-      smoothed += std::sqrt(uf(i) * uf(i) + eps * norm2);
+      if (i != skipped)
+      {
+        smoothed += std::sqrt(uf(i) * uf(i) + eps * norm2);
+      }
     }
     exact += uf.lpNorm<1>();
     area += std::sqrt(norm2);
@@ -768,8 +783,13 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
     const Eigen::Vector3d& n = normal[static_cast<size_t>(f)];
     Eigen::Vector3d ds = Eigen::Vector3d::Zero();
     Eigen::Matrix3d hs = Eigen::Matrix3d::Zero();
+    const int skipped = AlignmentAxis(this->AlignmentLabel, f);
     for (int i = 0; i < 3; ++i)
     {
+      if (i == skipped)
+      {
+        continue;
+      }
       const double si = std::sqrt(uf(i) * uf(i) + eps * norm * norm);
       Eigen::Vector3d q = eps * uf;
       q(i) += uf(i);

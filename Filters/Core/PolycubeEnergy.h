@@ -132,6 +132,11 @@ public:
   /// Faces (#F, labels 0..5, or -1) whose projected orientation the FaceBarrier protects.
   void SetFaceLabels(const std::vector<int>& labels) { this->FaceLabel = labels; }
 
+  /// Faces (#F, labels 0..5, or -1) whose alignment term drops their label's axis: a labelled
+  /// face is then pulled onto its label's axis (either way: FaceBarrier or FaceUnfold sets the
+  /// side) instead of the nearest one. Empty: the l1 alignment of eq. (10) for every face.
+  void SetAlignmentLabels(const std::vector<int>& labels) { this->AlignmentLabel = labels; }
+
   /// Faces (#F, labels 0..5, or -1) that the FaceUnfold penalty turns towards their label's
   /// direction. They do not count in IsFeasible.
   void SetUnfoldFaces(const std::vector<int>& labels) { this->UnfoldLabel = labels; }
@@ -212,6 +217,7 @@ private:
   std::vector<int> FaceLabel;
   std::vector<Eigen::Matrix3d> TargetRotation;
   std::vector<int> UnfoldLabel;
+  std::vector<int> AlignmentLabel;
   std::vector<double> FaceRestArea;
   std::vector<int> AnchorIndex;
   std::vector<double> AnchorTarget;

@@ -96,6 +96,9 @@ int main(int argc, char* argv[])
   overrideDouble("PCH_MIN_ALIGNMENT_EPSILON", params.MinAlignmentEpsilon);
   overrideInt("PCH_MAX_ROUNDS", params.MaxRounds);
   overrideDouble("PCH_COLLAPSE_AREA_RATIO", params.CollapseAreaRatio);
+  overrideInt("PCH_MONOTONE_REPAIR_ROUNDS", params.MonotoneRepairRounds);
+  overrideDouble("PCH_MONOTONE_REPAIR_TOLERANCE", params.MonotoneRepairTolerance);
+  overrideInt("PCH_MONOTONE_REPAIR_ITERATIONS", params.MonotoneRepairIterations);
   overrideDouble("PCH_MIN_CHART_AREA_FRACTION", params.MinChartAreaFraction);
   overrideInt("PCH_ITERATIONS_PER_ROUND", params.IterationsPerRound);
   overrideDouble("PCH_AREA_WEIGHT", params.AreaWeight);
@@ -213,6 +216,9 @@ int main(int argc, char* argv[])
     result.CreaseTurnBackBeforeFlattening,
     result.CreaseTurnBack,
     result.TurnedBackCreaseCount);
+  std::printf("crease repair: %d rounds, %d faces shaved\n",
+    result.MonotoneRepairRounds,
+    result.ShavedFaceCount);
   std::printf("faces relabelled: %d by the clean-up, %d because the flattening collapsed them\n",
     result.RelabelledFaceCount,
     result.CollapseRelabelledFaceCount);

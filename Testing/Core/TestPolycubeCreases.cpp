@@ -2,7 +2,8 @@
 // ComputePolycubeCreases (PolycubeCreases.h): a cube's surface has 12 creases, each a monotone
 // path from corner to corner along the axis of neither of its charts; pushing one crease vertex
 // past the end of its edge makes that crease, and only that one, turn back by exactly the
-// overshoot.
+// overshoot; shaving it gives the faces of its two charts around the vertex it runs back to
+// one label, and leaves a monotone cube alone.
 #include "PolycubeCharts.h"
 #include "PolycubeCreases.h"
 #include "TestAssert.h"
@@ -80,6 +81,38 @@ int main()
       PCH_CHECK(crease.Vertices[1] == middle);
       PCH_CHECK(std::abs(crease.NetLength - 2.0) < 1e-12);
     }
+  }
+
+  // Shaving: the monotone cube has nothing to shave; on the bent one the corner the crease runs
+  // back to (z = 1, behind z = 1.3) has the faces of the crease's two charts around it, which
+  // all take one of the two labels.
+  std::vector<int> labels = PolycubeFaceLabels(cube.Vertices, faces);
+  const std::vector<int> original = labels;
+  PCH_CHECK(ShaveTurnedBackCreases(cube.Vertices, faces, charts, creases, 1e-9, labels) == 0);
+  PCH_CHECK(labels == original);
+  const int shaved = ShaveTurnedBackCreases(moved, faces, charts, bent, 1e-9, labels);
+  std::cout << "shaved " << shaved << " face(s)" << std::endl;
+  PCH_CHECK(shaved > 0);
+  for (const PolycubeCrease& crease : bent)
+  {
+    if (crease.TurnBack <= 1e-9)
+    {
+      continue;
+    }
+    const int corner = crease.Vertices.back();
+    int labelSeen = -1;
+    for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    {
+      const int chart = charts.FaceChart[static_cast<size_t>(f)];
+      const bool atCorner = (faces.row(f).array() == corner).any();
+      if (atCorner && (chart == crease.ChartA || chart == crease.ChartB))
+      {
+        PCH_CHECK(labelSeen < 0 || labels[static_cast<size_t>(f)] == labelSeen);
+        labelSeen = labels[static_cast<size_t>(f)];
+      }
+    }
+    PCH_CHECK(labelSeen == charts.ChartLabel[static_cast<size_t>(crease.ChartA)] ||
+      labelSeen == charts.ChartLabel[static_cast<size_t>(crease.ChartB)]);
   }
   return 0;
 }

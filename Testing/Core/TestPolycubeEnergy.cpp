@@ -117,30 +117,51 @@ int main()
   {
     y(i) += 0.05 * std::sin(1.7 * i + 0.3);
   }
-  PolycubeEnergyTerms terms;
-  Eigen::VectorXd gradient(y.size());
   Eigen::SparseMatrix<double> hessian = energy.Pattern().ZeroMatrix();
-  PCH_CHECK(energy.EvaluateDerivatives(y.data(), terms, gradient, &hessian));
-  double worst = 0.0;
-  double largest = 0.0;
-  const double h = 1e-6;
-  for (int i = 0; i < y.size(); ++i)
+  auto checkGradient = [&](const char* name)
   {
-    Eigen::VectorXd plus = y;
-    Eigen::VectorXd minus = y;
-    plus(i) += h;
-    minus(i) -= h;
-    PolycubeEnergyTerms tp;
-    PolycubeEnergyTerms tm;
-    energy.Evaluate(plus.data(), tp);
-    energy.Evaluate(minus.data(), tm);
-    const double numeric = (tp.Total - tm.Total) / (2.0 * h);
-    worst = std::max(worst, std::abs(numeric - gradient(i)));
-    largest = std::max(largest, std::abs(gradient(i)));
-  }
-  std::cout << "gradient: worst difference " << worst << " of " << largest << "\n";
-  PCH_CHECK(largest > 1e-3);
-  PCH_CHECK(worst < 1e-6 * std::max(1.0, largest));
+    PolycubeEnergyTerms terms;
+    Eigen::VectorXd gradient(y.size());
+    hessian = energy.Pattern().ZeroMatrix();
+    PCH_CHECK(energy.EvaluateDerivatives(y.data(), terms, gradient, &hessian));
+    double worst = 0.0;
+    double largest = 0.0;
+    const double h = 1e-6;
+    for (int i = 0; i < y.size(); ++i)
+    {
+      Eigen::VectorXd plus = y;
+      Eigen::VectorXd minus = y;
+      plus(i) += h;
+      minus(i) -= h;
+      PolycubeEnergyTerms tp;
+      PolycubeEnergyTerms tm;
+      energy.Evaluate(plus.data(), tp);
+      energy.Evaluate(minus.data(), tm);
+      const double numeric = (tp.Total - tm.Total) / (2.0 * h);
+      worst = std::max(worst, std::abs(numeric - gradient(i)));
+      largest = std::max(largest, std::abs(gradient(i)));
+    }
+    std::cout << name << " gradient: worst difference " << worst << " of " << largest << "\n";
+    PCH_CHECK(largest > 1e-3);
+    PCH_CHECK(worst < 1e-6 * std::max(1.0, largest));
+  };
+  checkGradient("l1 alignment:");
+  // With alignment labels (the crease repair's deformation) each labelled face leaves out its
+  // label's axis; -1 keeps the l1 term. Same check, and the faces of the unturned tet A, whose
+  // first face (0, 1, 3) faces mostly -y, align better labelled -Y than +X.
+  energy.SetAlignmentLabels({ 3, 2, 4, -1, 1, 3, 5, 0 });
+  checkGradient("label alignment:");
+  auto alignmentOf = [&](int label)
+  {
+    energy.SetAlignmentLabels({ label, -1, -1, -1, -1, -1, -1, -1 });
+    PolycubeEnergyTerms t;
+    energy.Evaluate(x.data(), t);
+    return t.Alignment;
+  };
+  PCH_CHECK(alignmentOf(3) < alignmentOf(0));
+  PCH_CHECK(alignmentOf(3) < alignmentOf(-1));
+  energy.SetAlignmentLabels({});
+  checkGradient("l1 alignment again:");
   // The Gauss-Newton Hessian is symmetric and couples the vertices of faces across the cut.
   const Eigen::MatrixXd dense = Eigen::MatrixXd(hessian);
   PCH_CHECK((dense - dense.transpose()).cwiseAbs().maxCoeff() < 1e-12);
