@@ -52,6 +52,7 @@ vtkPolycubeDeformFilter::vtkPolycubeDeformFilter()
   this->ResidualTolerance = defaults.ResidualTolerance;
   this->NormalDifferenceWeight = defaults.NormalDifferenceWeight;
   this->NormalDifferenceAcrossCuts = defaults.NormalDifferenceAcrossCuts;
+  this->MonotoneRepairRounds = defaults.MonotoneRepairRounds;
   this->MinChartAreaFraction = defaults.MinChartAreaFraction;
   this->Flatten = defaults.Flatten;
 }
@@ -183,6 +184,7 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   params.ResidualTolerance = this->ResidualTolerance;
   params.NormalDifferenceWeight = this->NormalDifferenceWeight;
   params.NormalDifferenceAcrossCuts = this->NormalDifferenceAcrossCuts;
+  params.MonotoneRepairRounds = this->MonotoneRepairRounds;
   params.MinChartAreaFraction = this->MinChartAreaFraction;
   params.Flatten = this->Flatten;
   auto progress = [this](double fraction)
@@ -275,6 +277,7 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     fields, "CreaseTurnBackBeforeFlattening", result.CreaseTurnBackBeforeFlattening);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "TurnedBackCreaseCount", result.TurnedBackCreaseCount);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "ShavedFaceCount", result.ShavedFaceCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
   vtkNew<vtkDoubleArray> translations; // t_c of x_plus = Pi_c x_minus + t_c; none when uncut
   translations->SetName(names::CutTranslations);
@@ -322,6 +325,7 @@ void vtkPolycubeDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ResidualTolerance: " << this->ResidualTolerance << "\n";
   os << indent << "NormalDifferenceWeight: " << this->NormalDifferenceWeight << "\n";
   os << indent << "NormalDifferenceAcrossCuts: " << this->NormalDifferenceAcrossCuts << "\n";
+  os << indent << "MonotoneRepairRounds: " << this->MonotoneRepairRounds << "\n";
   os << indent << "MinChartAreaFraction: " << this->MinChartAreaFraction << "\n";
   os << indent << "Flatten: " << this->Flatten << "\n";
 }

@@ -117,6 +117,15 @@ public:
   ///@}
 
   ///@{
+  /// Uniform guidance: rounds of crease repair after labelling (PolycubeCreases.h). A polycube
+  /// edge whose mesh path runs back along its axis folds when flattened; its charts' faces
+  /// around the part that runs back take one label and the shape is deformed again. Default 6,
+  /// 0 turns it off.
+  vtkSetClampMacro(MonotoneRepairRounds, int, 0, 100);
+  vtkGetMacro(MonotoneRepairRounds, int);
+  ///@}
+
+  ///@{
   /// Charts smaller than this fraction of the boundary area are merged into a neighbour.
   /// Default 2e-4, in [0, 0.1].
   vtkSetClampMacro(MinChartAreaFraction, double, 0.0, 0.1);
@@ -148,6 +157,7 @@ protected:
   double ResidualTolerance = 1e-3;
   double NormalDifferenceWeight = 1.0;
   bool NormalDifferenceAcrossCuts = false;
+  int MonotoneRepairRounds = 6;
   double MinChartAreaFraction = 2e-4;
   bool Flatten = true;
 
