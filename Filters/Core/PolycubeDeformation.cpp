@@ -518,6 +518,36 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
   PolycubeEnergy energy(mesh.Rest, mesh.Cells, faces);
   const VariableReduction everyCoordinate = VariableReduction::Identity(mesh.VertexCount());
   PolycubeNewtonSolver solver(energy, everyCoordinate); // keeps references to both
+  // Deforms under the current labels: each face's alignment pulls it onto its label's axis, and
+  // the faces whose label differs from `reference` are turned to their side by the unfolding
+  // penalty, with the continuation's last weights.
+  auto deformUnderLabels = [&](const std::vector<int>& reference, int iterations)
+  {
+    std::vector<int> turned(labels.size(), -1);
+    for (size_t f = 0; f < labels.size(); ++f)
+    {
+      turned[f] = labels[f] != reference[f] ? labels[f] : -1;
+    }
+    energy.SetAlignmentLabels(labels);
+    energy.SetUnfoldFaces(turned);
+    PolycubeEnergyWeights weights = lastWeights;
+    weights.FaceUnfold = weights.Alignment;
+    weights.FaceBarrierThreshold = params.BarrierThreshold;
+    energy.SetWeights(weights);
+    NewtonSettings settings;
+    settings.LinearSolver = solverType;
+    settings.MaxIterations = iterations;
+    NewtonStats stats;
+    Eigen::VectorXd x = Flat(mesh.X);
+    const Status status = solver.Minimize(x, settings, stats);
+    if (status)
+    {
+      out.Iterations += stats.Iterations;
+      mesh.X = Unflat(x);
+    }
+    return status;
+  };
+  int roundsRun = 0;
   for (int round = 0; round < params.MonotoneRepairRounds; ++round)
   {
     const std::vector<int> before = labels;
@@ -530,29 +560,12 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
     cleanUp();
     out.ShavedFaceCount += shaved;
     ++out.MonotoneRepairRounds;
-    std::vector<int> turned(labels.size(), -1);
-    for (size_t f = 0; f < labels.size(); ++f)
-    {
-      turned[f] = labels[f] != before[f] ? labels[f] : -1;
-    }
-    energy.SetAlignmentLabels(labels);
-    energy.SetUnfoldFaces(turned);
-    PolycubeEnergyWeights weights = lastWeights;
-    weights.FaceUnfold = weights.Alignment;
-    weights.FaceBarrierThreshold = params.BarrierThreshold;
-    energy.SetWeights(weights);
-    NewtonSettings settings;
-    settings.LinearSolver = solverType;
-    settings.MaxIterations = params.MonotoneRepairIterations;
-    NewtonStats stats;
-    Eigen::VectorXd x = Flat(mesh.X);
-    const Status status = solver.Minimize(x, settings, stats);
+    ++roundsRun;
+    const Status status = deformUnderLabels(before, params.MonotoneRepairIterations);
     if (!status)
     {
       return status;
     }
-    out.Iterations += stats.Iterations;
-    mesh.X = Unflat(x);
     const State state = measure();
     if (state < best)
     {
@@ -565,30 +578,15 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
       break;
     }
   }
+  if (roundsRun == 0)
+  {
+    return Status::Success(); // nothing could be shaved (closed-loop creases): the shape is untouched
+  }
   labels = bestLabels;
   mesh.X = bestX;
   // The rounds take few iterations each (the shaving only needs the folds to move); the kept
   // state then settles under its labels as long as a continuation round.
-  std::vector<int> turned(labels.size(), -1);
-  for (size_t f = 0; f < labels.size(); ++f)
-  {
-    turned[f] = labels[f] != entryLabels[f] ? labels[f] : -1;
-  }
-  energy.SetAlignmentLabels(labels);
-  energy.SetUnfoldFaces(turned);
-  NewtonSettings settings;
-  settings.LinearSolver = solverType;
-  settings.MaxIterations = params.IterationsPerRound;
-  NewtonStats stats;
-  Eigen::VectorXd x = Flat(mesh.X);
-  const Status status = solver.Minimize(x, settings, stats);
-  if (!status)
-  {
-    return status;
-  }
-  out.Iterations += stats.Iterations;
-  mesh.X = Unflat(x);
-  return Status::Success();
+  return deformUnderLabels(entryLabels, params.IterationsPerRound);
 }
 
 /// Fang et al. §4.1: the map whose gradient best fits the frame field (eq. 7, the Poisson

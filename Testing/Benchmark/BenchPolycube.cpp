@@ -8,6 +8,8 @@
 //   PCH_ROUNDS=1 BenchPolycube ...      (prints every continuation round)
 //   PCH_FLATTEN=0 ...                   (stop after labelling: the output is the deformed mesh)
 //   PCH_LABELS=labels.txt ...           (writes each boundary face's label and chart id)
+//   PCH_MONOTONE_REPAIR_ROUNDS=n, PCH_MONOTONE_REPAIR_TOLERANCE=t, PCH_MONOTONE_REPAIR_ITERATIONS=k
+//                                       (override the crease repair's parameters)
 //
 // With an output path, the polycube of the last run is written as MEDIT (tets and boundary
 // triangles).
