@@ -128,6 +128,10 @@ struct PolycubeParameters
   int FlattenRounds = 8;
   /// Flattening: Newton iterations per anchor round and for the final hard-constrained solve.
   int FlattenIterations = 5;
+  /// Flattening (uncut): after the hard-constrained solve, the vertices left off their planes
+  /// are snapped one by one where their tets stay positive, and the solve repeated, at most
+  /// this many times (0: off).
+  int ResnapPasses = 3;
 
   /// Linear solver of the Newton steps.
   enum class LinearSolverType
