@@ -481,6 +481,17 @@ int RemovePinchingHexes(HexMesh& mesh, const Eigen::VectorXd& quality, std::vect
       ++uses[static_cast<size_t>(mesh.Cells(h, k))];
     }
   };
+  // Keeps the current removals when they leave fewer defects.
+  auto acceptIfFewer = [&](int defects, HexMeshValidity& after)
+  {
+    if (defects >= current)
+    {
+      return false;
+    }
+    current = defects;
+    validity = std::move(after);
+    return true;
+  };
   // One removal that lowers the defects, else a pair (a removal often moves a pinch to the
   // next cube of a diagonal chain: the second one then mends it).
   for (int round = 0; round < 16 && current > 0; ++round)
@@ -496,31 +507,19 @@ int RemovePinchingHexes(HexMesh& mesh, const Eigen::VectorXd& quality, std::vect
       }
       HexMeshValidity after;
       const int defects = CountDefects(WithoutHexes(mesh, remove), after);
-      if (defects < current)
+      const std::vector<int> seconds = defects == current ? candidatesOf(after) : std::vector<int>();
+      mended = acceptIfFewer(defects, after);
+      for (size_t j = 0; j < seconds.size() && !mended; ++j)
       {
-        current = defects;
-        validity = std::move(after);
-        mended = true;
-        break;
-      }
-      if (defects == current)
-      {
-        for (const int second : candidatesOf(after))
+        if (!take(seconds[j]))
         {
-          if (!take(second))
-          {
-            continue;
-          }
-          HexMeshValidity pair;
-          const int pairDefects = CountDefects(WithoutHexes(mesh, remove), pair);
-          if (pairDefects < current)
-          {
-            current = pairDefects;
-            validity = std::move(pair);
-            mended = true;
-            break;
-          }
-          putBack(second);
+          continue;
+        }
+        HexMeshValidity pair;
+        mended = acceptIfFewer(CountDefects(WithoutHexes(mesh, remove), pair), pair);
+        if (!mended)
+        {
+          putBack(seconds[j]);
         }
       }
       if (!mended)
