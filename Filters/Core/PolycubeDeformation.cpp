@@ -1034,25 +1034,18 @@ Status ComputePolycube(const TetMesh& input,
       labels);
   };
   out.RelabelledFaceCount = cleanUpLabels();
-  // On the cut mesh the repair (same code, transitions hard) made every closed-form model worse
-  // when tried (vertices off their planes: kitten 3 -> 16, rockerarm 10 -> 12, fertility
-  // 186 -> 236; each 8-26 s slower): there the collapse relabelling after it does better alone.
+  // The repair also runs on a cut mesh (a CutReduction for `reduction`, NormalPairsAcrossCuts
+  // for the pairs), but there it made every closed-form model worse when tried (vertices off
+  // their planes: kitten 3 -> 16, rockerarm 10 -> 12, fertility 186 -> 236; each 8-26 s slower):
+  // the collapse relabelling after it does better alone.
   if (!closedForm && out.Rounds > 0)
   {
-    VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
-    if (closedForm)
-    {
-      status = CutReduction(mesh, {}, reduction);
-      if (!status)
-      {
-        return Status::Failure("ComputePolycube: " + status.Message());
-      }
-    }
+    const VariableReduction everyCoordinate = VariableReduction::Identity(mesh.VertexCount());
     status = RepairTurnedBackCreases(mesh,
       topology.BoundaryFaces,
       CreaseAdjacency(mesh, topology.BoundaryFaces),
-      NormalPairsAcrossCuts(mesh, topology, params.NormalDifferenceAcrossCuts),
-      reduction,
+      {},
+      everyCoordinate,
       lastWeights,
       params,
       solverType,
