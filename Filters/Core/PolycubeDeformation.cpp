@@ -295,10 +295,18 @@ Triangles CreaseAdjacency(const WorkMesh& mesh, const Triangles& faces)
 /// The charts whose faces share one plane: on a cut mesh, a chart of M that runs across a cut
 /// is one piece on each side, and the pieces' planes differ by the cut's translation (a chart
 /// around a handle may climb by t_c along its normal), so charts are taken on M_c itself.
+/// `adjacency` is CreaseAdjacency(mesh, faces), passed in where the caller has it already.
+PolycubeCharts PlaneCharts(const WorkMesh& mesh,
+  const Triangles& faces,
+  const Triangles& adjacency,
+  const std::vector<int>& labels)
+{
+  return ComputePolycubeCharts(mesh.X, faces, adjacency, labels);
+}
+
 PolycubeCharts PlaneCharts(const WorkMesh& mesh, const Triangles& faces, const std::vector<int>& labels)
 {
-  return ComputePolycubeCharts(
-    mesh.X, faces, ComputeFaceAdjacency(mesh.VertexCount(), faces), labels);
+  return PlaneCharts(mesh, faces, CreaseAdjacency(mesh, faces), labels);
 }
 
 /// The variables of a cut mesh: copies related by their cut's transition with unknown
@@ -513,7 +521,8 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
   std::vector<PolycubeCrease> creases;
   auto measure = [&]()
   {
-    creases = ComputePolycubeCreases(mesh.X, faces, adjacency, PlaneCharts(mesh, faces, labels));
+    creases =
+      ComputePolycubeCreases(mesh.X, faces, adjacency, PlaneCharts(mesh, faces, adjacency, labels));
     State state;
     state.Largest = MaxCreaseTurnBack(creases, params.MonotoneRepairTolerance, &state.Count);
     return state;
@@ -562,7 +571,7 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
   {
     const std::vector<int> before = labels;
     const int shaved = ShaveTurnedBackCreases(
-      mesh.X, faces, PlaneCharts(mesh, faces, labels), creases, params.MonotoneRepairTolerance, labels);
+      mesh.X, faces, PlaneCharts(mesh, faces, adjacency, labels), creases, params.MonotoneRepairTolerance, labels);
     if (shaved == 0)
     {
       break;
@@ -597,86 +606,6 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
   // The rounds take few iterations each (the shaving only needs the folds to move); the kept
   // state then settles under its labels as long as a continuation round.
   return deformUnderLabels(entryLabels, params.IterationsPerRound);
-}
-
-/// The flattening leaves a vertex's chart coordinates to the penalty when snapping them all at
-/// once would invert a tet or fold a face. After the relaxation with the other planes exact,
-/// many sit a hair from their planes (rockerarm: 2e-8 of the diagonal) and their neighbours
-/// have moved, so each is tried alone and stays on its planes when its tets stay positive and
-/// its guarded faces unfolded. Returns how many vertices were snapped.
-int SnapReleasedVertices(const PolycubeEnergy& energy,
-  const Tets& cells,
-  const Triangles& faces,
-  const std::vector<int>& guarded,
-  const std::vector<std::vector<int>>& vertexAnchors,
-  const std::vector<int>& anchorIndex,
-  const std::vector<double>& anchorTarget,
-  std::vector<bool>& released,
-  Eigen::VectorXd& x)
-{
-  const size_t vertexCount = vertexAnchors.size();
-  std::vector<std::vector<int>> vertexTets(vertexCount), vertexFaces(vertexCount);
-  for (Eigen::Index t = 0; t < cells.rows(); ++t)
-  {
-    for (int k = 0; k < 4; ++k)
-    {
-      vertexTets[static_cast<size_t>(cells(t, k))].push_back(static_cast<int>(t));
-    }
-  }
-  for (Eigen::Index f = 0; f < faces.rows(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      vertexFaces[static_cast<size_t>(faces(f, k))].push_back(static_cast<int>(f));
-    }
-  }
-  auto position = [&x](int v) { return Eigen::Vector3d(x(3 * v), x(3 * v + 1), x(3 * v + 2)); };
-  int snappedCount = 0;
-  for (size_t v = 0; v < vertexCount; ++v)
-  {
-    std::vector<int> loose;
-    for (int i : vertexAnchors[v])
-    {
-      if (released[static_cast<size_t>(i)])
-      {
-        loose.push_back(i);
-      }
-    }
-    if (loose.empty())
-    {
-      continue;
-    }
-    const Eigen::Vector3d before = position(static_cast<int>(v));
-    for (int i : loose)
-    {
-      x(anchorIndex[static_cast<size_t>(i)]) = anchorTarget[static_cast<size_t>(i)];
-    }
-    bool valid = true;
-    for (int t : vertexTets[v])
-    {
-      valid = valid &&
-        TetSignedVolume(position(cells(t, 0)), position(cells(t, 1)), position(cells(t, 2)),
-          position(cells(t, 3))) > 0.0;
-    }
-    for (int f : vertexFaces[v])
-    {
-      valid = valid &&
-        (guarded[static_cast<size_t>(f)] < 0 || energy.FaceOrientation(x.data(), f) > 0.0);
-    }
-    if (valid)
-    {
-      for (int i : loose)
-      {
-        released[static_cast<size_t>(i)] = false;
-      }
-      ++snappedCount;
-    }
-    else
-    {
-      x.segment<3>(3 * static_cast<Eigen::Index>(v)) = before;
-    }
-  }
-  return snappedCount;
 }
 
 /// Fang et al. §4.1: the map whose gradient best fits the frame field (eq. 7, the Poisson
@@ -1604,43 +1533,10 @@ Status ComputePolycube(const TetMesh& input,
         NewtonSettings settings;
         settings.LinearSolver = solverType;
         settings.MaxIterations = params.FlattenIterations;
-        auto relax = [&](const VariableReduction& variables)
-        {
-          PolycubeNewtonSolver solver(energy, variables);
-          NewtonStats stats;
-          const Status relaxed = solver.Minimize(snapped, settings, stats);
-          out.Iterations += stats.Iterations;
-          return relaxed;
-        };
-        status = relax(reduction);
-        // The released vertices, one at a time, where the relaxation made room (uncut: on a cut
-        // mesh every copy of a point would have to move with it).
-        for (int pass = 0; !closedForm && status && pass < params.ResnapPasses &&
-             out.UnflattenedVertexCount > 0;
-             ++pass)
-        {
-          if (SnapReleasedVertices(energy,
-                mesh.Cells,
-                topology.BoundaryFaces,
-                guarded,
-                vertexAnchors,
-                anchorIndex,
-                anchorTarget,
-                released,
-                snapped) == 0)
-          {
-            break;
-          }
-          fixedIndex.clear();
-          fixedTarget.clear();
-          freeIndex.clear();
-          freeTarget.clear();
-          out.UnflattenedVertexCount =
-            partitionAnchors(released, freeIndex, freeTarget, fixedIndex, fixedTarget);
-          energy.SetAnchors(freeIndex, freeTarget);
-          status = relax(
-            VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget));
-        }
+        PolycubeNewtonSolver solver(energy, reduction);
+        NewtonStats stats;
+        status = solver.Minimize(snapped, settings, stats);
+        out.Iterations += stats.Iterations;
         if (!status)
         {
           return Status::Failure("ComputePolycube: " + status.Message());

@@ -128,13 +128,6 @@ struct PolycubeParameters
   int FlattenRounds = 8;
   /// Flattening: Newton iterations per anchor round and for the final hard-constrained solve.
   int FlattenIterations = 5;
-  /// Flattening (uncut): after the hard-constrained solve, the vertices left off their planes
-  /// are snapped one by one where their tets stay positive, and the solve repeated, at most
-  /// this many times (default 0: off). It leaves fewer vertices off (rockerarm l1 16 -> 9,
-  /// elephant 24 -> 4, fertility 162 -> 88) but the tets it keeps barely positive hurt the hex
-  /// stage: rockerarm l1's smoothed mesh became invalid (one inverted hex), elephant l1 rounding
-  /// left 68 tets inverted instead of 1, and elephant FrameField's hex stage failed.
-  int ResnapPasses = 0;
 
   /// Linear solver of the Newton steps.
   enum class LinearSolverType

@@ -10,7 +10,6 @@
 //   PCH_LABELS=labels.txt ...           (writes each boundary face's label and chart id)
 //   PCH_MONOTONE_REPAIR_ROUNDS=n, PCH_MONOTONE_REPAIR_TOLERANCE=t, PCH_MONOTONE_REPAIR_ITERATIONS=k
 //                                       (override the crease repair's parameters)
-//   PCH_RESNAP_PASSES=n ...             (re-snap the vertices left off their planes; default 0)
 //
 // With an output path, the polycube of the last run is written as MEDIT (tets and boundary
 // triangles).
@@ -102,7 +101,6 @@ int main(int argc, char* argv[])
   overrideInt("PCH_MONOTONE_REPAIR_ROUNDS", params.MonotoneRepairRounds);
   overrideDouble("PCH_MONOTONE_REPAIR_TOLERANCE", params.MonotoneRepairTolerance);
   overrideInt("PCH_MONOTONE_REPAIR_ITERATIONS", params.MonotoneRepairIterations);
-  overrideInt("PCH_RESNAP_PASSES", params.ResnapPasses);
   overrideDouble("PCH_MIN_CHART_AREA_FRACTION", params.MinChartAreaFraction);
   overrideInt("PCH_ITERATIONS_PER_ROUND", params.IterationsPerRound);
   overrideDouble("PCH_AREA_WEIGHT", params.AreaWeight);
