@@ -59,7 +59,8 @@ public:
   ///@{
   /// With Padding and without Smoothing: place each inner copy of the padding layer between its
   /// position mapped from the polycube and its boundary vertex pushed along the surface normal,
-  /// where its hexes are best. With Smoothing the untangling and the sweeps optimise the inner
+  /// where its hexes are best; where they stay poor (scaled Jacobian below 0.1), the copy then
+  /// walks off that segment to a better point. No other vertex moves. With Smoothing the untangling and the sweeps optimise the inner
   /// copies from their mapped positions instead (measured better). Default on.
   vtkSetMacro(PaddingPlacement, bool);
   vtkGetMacro(PaddingPlacement, bool);

@@ -166,6 +166,63 @@ Status placePaddingCopies(HexMesh& mesh,
       break;
     }
   }
+  // Then each copy whose hexes are still poor walks in space (compass search: the six axis
+  // directions, the step halved when none helps), again only to strictly better places. Where the
+  // surface is nearly flat at a polycube corner or edge, the hexes inside need the copy deeper
+  // than the push or off the normal, which no blend reaches.
+  for (int sweep = 0; sweep < params.SearchSweeps; ++sweep)
+  {
+    bool moved = false;
+    for (int v : copies)
+    {
+      const std::vector<int>& hexes = hexesAt[static_cast<size_t>(v)];
+      // The smallest scaled Jacobian counts up to SearchBelow, the mean beyond it, so that the
+      // walk does not trade good hexes for a minimum that is already fine.
+      auto capped = [&]()
+      {
+        std::pair<double, double> quality = HexQuality(mesh, hexes);
+        quality.first = std::min(quality.first, params.SearchBelow);
+        return quality;
+      };
+      std::pair<double, double> bestQuality = capped();
+      const int outer = outerOf[static_cast<size_t>(v)];
+      if (bestQuality.first >= params.SearchBelow || edgeCount[static_cast<size_t>(outer)] == 0)
+      {
+        continue;
+      }
+      double step = params.SearchStep * edgeSum[static_cast<size_t>(outer)] /
+        edgeCount[static_cast<size_t>(outer)];
+      for (int level = 0; level < params.SearchLevels; ++level, step *= 0.5)
+      {
+        bool improved = true;
+        while (improved)
+        {
+          improved = false;
+          for (int direction = 0; direction < 6; ++direction)
+          {
+            const Eigen::RowVector3d start = mesh.Vertices.row(v);
+            mesh.Vertices(v, direction / 2) += direction % 2 == 0 ? step : -step;
+            const std::pair<double, double> quality = capped();
+            if (quality > bestQuality)
+            {
+              bestQuality = quality;
+              improved = true;
+              moved = true;
+              blend[static_cast<size_t>(v)] = -1.0; // off the segment
+            }
+            else
+            {
+              mesh.Vertices.row(v) = start;
+            }
+          }
+        }
+      }
+    }
+    if (!moved)
+    {
+      break;
+    }
+  }
   for (int v : copies)
   {
     result.MovedCount += blend[static_cast<size_t>(v)] != 0.0 ? 1 : 0;

@@ -2,7 +2,8 @@
 // placePaddingCopies (HexPaddingPlacement.h): on a padded grid of cubes whose inner copies were
 // put in skewed places (as a distorted polycube map leaves them), the placement raises the
 // padding hexes' mean scaled Jacobian and the number of valid hexes, never lowers any hex's
-// minimum around a copy, moves only the inner copies, and refuses malformed padding.
+// minimum around a copy, moves only the inner copies, and refuses malformed padding; where the
+// blends leave a poor hex, the walk off the blend segment raises the minimum.
 #include "HexPadding.h"
 #include "HexPaddingPlacement.h"
 #include "HexScaledJacobian.h"
@@ -101,6 +102,38 @@ int main()
     HexPaddingPlacementResult more;
     PCH_CHECK(placePaddingCopies(again, paddingHexCount, params, more));
     PCH_CHECK(more.MeanAfter >= result.MeanAfter - 1e-3);
+  }
+
+  // The walk (after the blends) reaches places off the segment between the mapped and the
+  // pushed point: with copies jittered sideways and a thin push, no blend undoes the jitter, and
+  // the walk raises the smallest scaled Jacobian at the copies (towards its cap) without giving
+  // up more than a little of the mean.
+  {
+    int count = 0;
+    const HexMesh rough = SkewedPaddedGrid(4, 0.3, count);
+    HexPaddingPlacementParameters blendsOnly;
+    blendsOnly.Thickness = 0.05;
+    blendsOnly.SearchSweeps = 0;
+    HexPaddingPlacementParameters walk = blendsOnly;
+    walk.SearchSweeps = HexPaddingPlacementParameters().SearchSweeps;
+    walk.SearchBelow = 0.6; // above what the blends reach here
+    HexMesh withBlends = rough;
+    HexMesh withWalk = rough;
+    HexPaddingPlacementResult blended, walked;
+    PCH_CHECK(placePaddingCopies(withBlends, count, blendsOnly, blended));
+    PCH_CHECK(placePaddingCopies(withWalk, count, walk, walked));
+    const Eigen::VectorXd q0 = ComputeHexScaledJacobians(rough);
+    const Eigen::VectorXd q1 = ComputeHexScaledJacobians(withBlends);
+    const Eigen::VectorXd q2 = ComputeHexScaledJacobians(withWalk);
+    std::cout << "jittered copies, thin push: min at the copies " << walked.MinBefore
+              << ", blends " << blended.MinAfter << ", walk " << walked.MinAfter << "; inverted "
+              << (q0.array() <= 0.0).count() << ", " << (q1.array() <= 0.0).count() << ", "
+              << (q2.array() <= 0.0).count() << "; padding mean " << blended.MeanAfter << ", "
+              << walked.MeanAfter << std::endl;
+    PCH_CHECK(walked.MinAfter > blended.MinAfter + 0.05);
+    PCH_CHECK(q2.minCoeff() >= q1.minCoeff());
+    PCH_CHECK((q2.array() <= 0.0).count() <= (q1.array() <= 0.0).count());
+    PCH_CHECK(walked.MeanAfter >= blended.MeanAfter - 0.06); // 0.712 -> 0.665 here
   }
 
   // Without padding (0 padding hexes) nothing moves.
