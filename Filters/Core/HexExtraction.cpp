@@ -297,7 +297,8 @@ Status extractHexMesh(const PolycubeTetMesh& input,
 
   // 2. Integer planes. Whether greedy rounding keeps every tet positive depends on where the
   //    planes fall between integers, so a failure is retried at slightly different scales (the
-  //    hex count is a target, not a promise); the first success wins.
+  //    hex count is a target, not a promise); the first success wins. The fast path is tried
+  //    at every scale first, the slow fallbacks only at the target scale after all failed.
   auto start = std::chrono::steady_clock::now();
   IntegerRoundingParameters rounding;
   rounding.CandidateCount = params.RoundingCandidates;
@@ -309,9 +310,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   const double targetScale = result.LatticeScale;
   std::unique_ptr<IntegerRoundingResult> bestEffort;
   double bestEffortScale = targetScale;
-  for (int attempt = 0; attempt < attempts; ++attempt)
+  // Rounds at `factor` times the target scale; the status of roundPolycubePlanes.
+  auto roundAt = [&](double factor, bool fastPathOnly)
   {
-    result.LatticeScale = targetScale * factors[attempt];
+    result.LatticeScale = targetScale * factor;
     const Points reference =
       (input.PolycubeVertices.rowwise() - polycubeCentre) * result.LatticeScale;
     // In the lattice, u = s (x - c): u_plus = Pi u_minus + s (t + Pi c - c).
@@ -322,7 +324,8 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         (input.CutTranslations[static_cast<size_t>(c)] +
           cutSeams.Rotations[static_cast<size_t>(c)].cast<double>() * centreColumn - centreColumn);
     }
-    status = roundPolycubePlanes(
+    rounding.FastPathOnly = fastPathOnly;
+    const Status roundingStatus = roundPolycubePlanes(
       original,
       reference,
       cells,
@@ -331,24 +334,35 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       rounded,
       [&progress](double p) { return ReportProgress(progress, 0.3 * p); },
       hasSeams ? &cutSeams : nullptr);
-    result.RoundingAttempts = attempt + 1;
-    if (status && rounded.BestEffort && !bestEffort)
+    ++result.RoundingAttempts;
+    if (roundingStatus && rounded.BestEffort && !bestEffort)
     {
       // Keep the first best-effort rounding in case no scale gives a clean one.
       bestEffort = std::make_unique<IntegerRoundingResult>(rounded);
       bestEffortScale = result.LatticeScale;
     }
-    if ((status && !rounded.BestEffort) || status.Message().find("aborted") != std::string::npos)
+    return roundingStatus;
+  };
+  auto aborted = [](const Status& s) { return s.Message().find("aborted") != std::string::npos; };
+  bool clean = false;
+  bool unflattenable = false;
+  for (int attempt = 0; attempt < attempts && !clean && !unflattenable; ++attempt)
+  {
+    status = roundAt(factors[attempt], attempts > 1);
+    if (!status && aborted(status))
     {
-      break;
+      return status;
     }
-    if (status && rounded.UnflattenableCharts)
+    clean = status && !rounded.BestEffort;
+    unflattenable = status && rounded.UnflattenableCharts; // then no scale does better
+  }
+  if (!clean && !unflattenable && attempts > 1)
+  {
+    // The slow fallbacks (barrier relaxation, careful rounding), at the target scale.
+    status = roundAt(factors[0], false);
+    if (!status && aborted(status))
     {
-      break; // the charts cannot be flat at any scale
-    }
-    if (bestEffort && Seconds(start) > 2.0 * rounding.TimeBudgetSeconds)
-    {
-      break; // other scales rarely do better than a best effort; do not spend minutes on them
+      return status;
     }
   }
   if (!status && bestEffort && status.Message().find("aborted") == std::string::npos)

@@ -84,7 +84,8 @@ struct HexExtractionParameters
   /// planes fall between integers decides whether greedy rounding can keep every tet positive
   /// (1 % of a 30-unit model moves a plane by 0.3). A best effort because the polycube's
   /// charts cannot all be flat (IntegerRoundingResult::UnflattenableCharts) ends the attempts:
-  /// that does not depend on the scale.
+  /// that does not depend on the scale. Each scale gets the fast path only; when none is clean,
+  /// the target scale is rounded once more with the slow fallbacks (IntegerRounding.h).
   int RoundingAttempts = 5;
   /// Smooth the rounded polycube map over its free coordinates before the extraction, chart
   /// planes and cut relations held (PolycubeMapSmoothing.h; default off). It is kept only when
@@ -125,7 +126,7 @@ struct HexExtractionResult
   int ChartCount = 0;
   int PlaneCount = 0;
   int RoundingFallbackCount = 0; ///< planes not rounded to their nearest integer
-  int RoundingAttempts = 0;      ///< scales tried (1 when the target scale worked)
+  int RoundingAttempts = 0;      ///< roundings tried (1 when the target scale worked)
   /// How the kept rounding was reached: "fast" (the separations alone, one re-solve and
   /// untangling), "careful" (a volume check per candidate), "relaxed" (the barrier-guarded
   /// relaxation) or "best effort" (tets left inverted).

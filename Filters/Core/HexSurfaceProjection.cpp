@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace polycubehex
@@ -128,9 +129,11 @@ public:
   double CellSize() const { return this->Cell; }
   int MaxRing() const { return std::max({ this->Dims[0], this->Dims[1], this->Dims[2] }); }
 
-  /// Calls visit(f) for the triangles binned within `ring` cells of p's cell.
+  /// Calls visit(f) for the triangles binned within `ring` cells of p's cell, skipping the
+  /// cells within `inner` cells (already searched; -1 for none). A triangle spanning several
+  /// cells may be visited more than once.
   template<class Visitor>
-  void Visit(const Eigen::Vector3d& p, int ring, Visitor&& visit) const
+  void Visit(const Eigen::Vector3d& p, int ring, int inner, Visitor&& visit) const
   {
     const std::array<int, 3> centre = this->CellOf(p);
     for (int i = std::max(0, centre[0] - ring); i <= std::min(this->Dims[0] - 1, centre[0] + ring);
@@ -144,6 +147,11 @@ public:
              k <= std::min(this->Dims[2] - 1, centre[2] + ring);
              ++k)
         {
+          if (std::abs(i - centre[0]) <= inner && std::abs(j - centre[1]) <= inner &&
+            std::abs(k - centre[2]) <= inner)
+          {
+            continue;
+          }
           const size_t b = this->Index(i, j, k);
           for (int item = this->Start[b]; item < this->Start[b + 1]; ++item)
           {
@@ -375,6 +383,7 @@ bool HexSurfaceProjection::Release(int v, const Eigen::Vector3d& p)
   const HexSmoothingSurface& surface = this->Surface;
   this->Grid->Visit(p,
     3,
+    -1,
     [&](int f)
     {
       if ((ClosestPointOnTriangle(p,
@@ -402,6 +411,7 @@ bool HexSurfaceProjection::Smooth(const Eigen::Vector3d& p,
   // The grid's cells are at least `radius` wide, so one ring holds every triangle within it.
   this->Grid->Visit(p,
     1,
+    -1,
     [&](int f)
     {
       const auto found = std::find(charts.begin(), charts.end(), surface.FaceChart[f]);
@@ -464,9 +474,9 @@ int HexSurfaceProjection::Nearest(const Eigen::Vector3d& p,
   // The nearest triangle found within `ring` cells is the nearest overall once it is closer
   // than `ring` cells: any closer triangle would have been binned in the searched cells.
   const TriangleGrid& grid = *this->Grid;
-  for (int ring = 1;; ring *= 2)
+  for (int ring = 1, inner = -1;; inner = ring, ring *= 2)
   {
-    grid.Visit(p, ring, consider);
+    grid.Visit(p, ring, inner, consider);
     if (std::sqrt(best) <= ring * grid.CellSize())
     {
       break;

@@ -211,6 +211,11 @@ struct IntegerRoundingParameters
   /// (then AcceptInvertedTets decides). Both rarely rescue a polycube whose labels the
   /// deformation could not flatten, and on 75k tets they took minutes.
   double TimeBudgetSeconds = 10.0;
+  /// Stop after the fast path (greedy rounding, one re-solve, untangling): when a tet stays
+  /// below MinimumVolumeRatio, return it as a best effort without the slow fallbacks (default
+  /// off). The hex stage tries the fast path at several scales first, which is cheaper than
+  /// the fallbacks at one (kitten Uniform: 0.2-1.2 s per scale against 5-8 s).
+  bool FastPathOnly = false;
   /// The last step, when on: the rounded map is smoothed over its free coordinates, planes and
   /// cut relations held (PolycubeMapSmoothing.h; default off).
   bool SmoothMap = false;
