@@ -1119,18 +1119,7 @@ private:
 };
 } // namespace
 
-namespace
-{
-/// Rings of tets around the tets below the target that the nonlinear untangling moves. Measured
-/// against the whole mesh (hex stage, smoothing on; min scaled Jacobian whole / 4 rings / 2
-/// rings): kitten Uniform 0.279 / 0.479 / 0.479 with rounding 14.9 / 6.9 / 4.1 s, elephant
-/// Uniform 0.402 / 0.459 / 0.454 (11.4 / 3.3 / 1.8 s), fertility closed form 0.081 / 0.134 /
-/// -0.000, rockerarm closed form 0.325 / 0.244 / 0.191. Where the charts cannot be flat the
-/// untangling starts from tets it cannot free, and the outcome is erratic either way.
-constexpr int GlobalUntangleRings = 4;
-} // namespace
-
-double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target) const
+double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target, int rings) const
 {
   const Impl& d = *this->Data;
   double ratio = this->MinVolumeRatio(positions);
@@ -1138,14 +1127,13 @@ double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target) c
   {
     return ratio;
   }
-  // Only a neighbourhood of the tets below the target moves (GlobalUntangleRings of tets around
-  // them): elsewhere the linear re-solve is already the distortion's optimum, and an L-BFGS
-  // iteration then costs the neighbourhood instead of the mesh. Over the whole of kitten's
-  // 55k tets, 500 iterations per weight took 2-3 s, three roundings in one hex stage 15 s.
+  // With rings >= 0 only a neighbourhood of the tets below the target moves: elsewhere the
+  // linear re-solve is already the distortion's optimum, and an L-BFGS iteration then costs the
+  // neighbourhood instead of the mesh.
   const int vertexCount = static_cast<int>(positions.rows());
   const int tetCount = static_cast<int>(d.Cells.rows());
-  std::vector<char> inRegion(static_cast<size_t>(vertexCount), 0);
-  for (int t = 0; t < tetCount; ++t)
+  std::vector<char> inRegion(static_cast<size_t>(vertexCount), rings < 0 ? 1 : 0);
+  for (int t = 0; t < tetCount && rings >= 0; ++t)
   {
     if (SignedVolume(positions, d.Cells, t) / d.ReferenceVolume[t] < target)
     {
@@ -1155,7 +1143,7 @@ double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target) c
       }
     }
   }
-  for (int ring = 0; ring < GlobalUntangleRings; ++ring)
+  for (int ring = 0; ring < rings; ++ring)
   {
     std::vector<char> grown = inRegion;
     for (int t = 0; t < tetCount; ++t)
@@ -1702,14 +1690,18 @@ Status roundPolycubePlanes(const Points& rest,
     separation.Edges(),
     start);
 
-  // Fast path: round with the separations only, then re-solve and untangle once.
+  // Fast path: round with the separations only, then re-solve and untangle once. Where the
+  // charts cannot all be flat, the untangling starts from tets it cannot free; it gets the whole
+  // mesh there (one rounding only, see UnflattenableCharts).
+  const bool flattenable = ChartsCanBeFlat(reference, cells, charts);
   auto finish = [&](const Eigen::VectorXd& planes)
   {
     solver.Solve(planes, result.Positions);
     result.MinVolumeRatio = solver.Untangle(result.Positions, params.UntangleTarget);
     if (result.MinVolumeRatio < params.MinimumVolumeRatio)
     {
-      result.MinVolumeRatio = solver.UntangleGlobally(result.Positions, params.UntangleTarget);
+      result.MinVolumeRatio = solver.UntangleGlobally(
+        result.Positions, params.UntangleTarget, flattenable ? params.UntangleRings : -1);
     }
     return result.MinVolumeRatio >= params.MinimumVolumeRatio;
   };
@@ -1732,7 +1724,7 @@ Status roundPolycubePlanes(const Points& rest,
   const auto deadline = started + budget;
   const bool fastFailed = !finish(planes);
   result.UnflattenableCharts = fastFailed && params.AcceptInvertedTets &&
-    !params.FallbacksWhenUnflattenable && !ChartsCanBeFlat(reference, cells, charts);
+    !params.FallbacksWhenUnflattenable && !flattenable;
   if (fastFailed && !result.UnflattenableCharts && !cut && !params.FastPathOnly &&
     std::chrono::steady_clock::now() < started + budget / 2)
   {

@@ -310,7 +310,7 @@ void TestUntangleGloballyIsLocal()
   }
   PCH_CHECK(solver.MinVolumeRatio(tangled) < 0.0);
   Points untangled = tangled;
-  const double ratio = solver.UntangleGlobally(untangled, 0.05);
+  const double ratio = solver.UntangleGlobally(untangled, 0.05, 4);
   std::cout << "local global untangle: ratio " << ratio << std::endl;
   PCH_CHECK(ratio >= 0.025);
   int farMoved = 0;
