@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolycubeHexSurfaceDistance.h"
 
+#include "ThreadCount.h"
+
 #include <vtkCellArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetSurfaceFilter.h>
@@ -9,8 +11,6 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSMPThreadLocalObject.h>
-#include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangle.h>
@@ -105,8 +105,9 @@ bool SampleByArea(vtkPolyData* surface,
   return true;
 }
 
-/// Distance from every sample to the nearest point of `target` (any point of a triangle).
-/// Each distance depends on its sample only, so the threads cannot change the result.
+/// Distance from every sample to the nearest point of `target` (any point of a triangle), the
+/// samples split among the core's threads (VTK's SMP backend may be sequential). Each distance
+/// depends on its sample only, so the threads cannot change the result.
 std::vector<double> DistancesTo(const std::vector<double>& samples, vtkPolyData* target)
 {
   target->BuildCells(); // built here, once, rather than lazily by the first thread
@@ -114,22 +115,22 @@ std::vector<double> DistancesTo(const std::vector<double>& samples, vtkPolyData*
   locator->SetDataSet(target);
   locator->BuildLocator();
 
-  const vtkIdType count = static_cast<vtkIdType>(samples.size() / 3);
-  std::vector<double> distances(count);
-  vtkSMPThreadLocalObject<vtkGenericCell> cells;
-  vtkSMPTools::For(0,
-    count,
-    [&](vtkIdType begin, vtkIdType end)
+  const int count = static_cast<int>(samples.size() / 3);
+  std::vector<double> distances(static_cast<size_t>(count));
+  // The locator's closest-point query is thread safe when each thread brings its own cell.
+  ParallelChunks(count,
+    1024,
+    [&](int begin, int end)
     {
-      vtkGenericCell* cell = cells.Local();
-      for (vtkIdType s = begin; s < end; ++s)
+      vtkNew<vtkGenericCell> cell;
+      for (int s = begin; s < end; ++s)
       {
         double closest[3];
         vtkIdType cellId = -1;
         int subId = 0;
         double dist2 = 0.0;
         locator->FindClosestPoint(samples.data() + 3 * s, closest, cell, cellId, subId, dist2);
-        distances[s] = std::sqrt(dist2);
+        distances[static_cast<size_t>(s)] = std::sqrt(dist2);
       }
     });
   return distances;

@@ -12,6 +12,7 @@
 #include <ceres/first_order_function.h>
 #include <ceres/gradient_problem.h>
 #include <ceres/gradient_problem_solver.h>
+#include <ceres/iteration_callback.h>
 
 #include <algorithm>
 #include <chrono>
@@ -1119,7 +1120,70 @@ private:
 };
 } // namespace
 
-double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target, int rings) const
+namespace
+{
+/// Ends an L-BFGS run of the untangling once the count of tets below a ratio has not fallen
+/// for `Window` iterations: where the charts cannot all be flat some tets cannot be freed, and
+/// the iterations after the last one freed only polish the distortion at full cost.
+class UntangleStallCallback : public ceres::IterationCallback
+{
+public:
+  UntangleStallCallback(const UntangleFunction& function,
+    const double* y,
+    const Points& start,
+    const Tets& cells,
+    const std::vector<double>& referenceVolume,
+    double threshold,
+    int window)
+    : Function(function)
+    , Y(y)
+    , X(start)
+    , Cells(cells)
+    , ReferenceVolume(referenceVolume)
+    , Threshold(threshold)
+    , Window(window)
+  {
+  }
+
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override
+  {
+    if (summary.iteration == 0 || summary.iteration % Check != 0)
+    {
+      return ceres::SOLVER_CONTINUE;
+    }
+    this->Function.Scatter(this->Y, this->X);
+    int below = 0;
+    for (int t = 0; t < static_cast<int>(this->Cells.rows()); ++t)
+    {
+      below += SignedVolume(this->X, this->Cells, t) / this->ReferenceVolume[t] < this->Threshold;
+    }
+    if (below < this->Fewest)
+    {
+      this->Fewest = below;
+      this->LastFall = summary.iteration;
+    }
+    return summary.iteration - this->LastFall >= this->Window ? ceres::SOLVER_TERMINATE_SUCCESSFULLY
+                                                             : ceres::SOLVER_CONTINUE;
+  }
+
+private:
+  static constexpr int Check = 10;
+  const UntangleFunction& Function;
+  const double* Y;
+  Points X;
+  const Tets& Cells;
+  const std::vector<double>& ReferenceVolume;
+  double Threshold;
+  int Window;
+  int Fewest = std::numeric_limits<int>::max();
+  int LastFall = 0;
+};
+} // namespace
+
+double PolycubePlaneSolver::UntangleGlobally(Points& positions,
+  double target,
+  int rings,
+  int stall) const
 {
   const Impl& d = *this->Data;
   double ratio = this->MinVolumeRatio(positions);
@@ -1254,6 +1318,13 @@ double PolycubePlaneSolver::UntangleGlobally(Points& positions, double target, i
     options.logging_type = ceres::SILENT;
     options.function_tolerance = 1e-12;
     options.gradient_tolerance = 1e-12;
+    UntangleStallCallback stallCallback(
+      *function, y.data(), positions, regionCells, referenceVolume, 0.5 * target, stall);
+    if (stall > 0)
+    {
+      options.update_state_every_iteration = true;
+      options.callbacks.push_back(&stallCallback);
+    }
     ceres::GradientProblemSolver::Summary summary;
     ceres::Solve(options, problem, y.data(), &summary);
     function->Scatter(y.data(), positions);
@@ -1700,8 +1771,10 @@ Status roundPolycubePlanes(const Points& rest,
     result.MinVolumeRatio = solver.Untangle(result.Positions, params.UntangleTarget);
     if (result.MinVolumeRatio < params.MinimumVolumeRatio)
     {
-      result.MinVolumeRatio = solver.UntangleGlobally(
-        result.Positions, params.UntangleTarget, flattenable ? params.UntangleRings : -1);
+      result.MinVolumeRatio = solver.UntangleGlobally(result.Positions,
+        params.UntangleTarget,
+        flattenable ? params.UntangleRings : -1,
+        params.UntangleStallIterations);
     }
     return result.MinVolumeRatio >= params.MinimumVolumeRatio;
   };

@@ -268,9 +268,14 @@ void TestUntangle()
   const double localRatio = solver.Untangle(local, 0.05);
   Points global = tangled;
   const double globalRatio = solver.UntangleGlobally(global, 0.05);
-  std::cout << "untangle: local " << localRatio << ", global " << globalRatio << std::endl;
+  // The stall rule must not end a run that is still freeing tets.
+  Points stalled = tangled;
+  const double stalledRatio = solver.UntangleGlobally(stalled, 0.05, -1, 10);
+  std::cout << "untangle: local " << localRatio << ", global " << globalRatio << ", with stall "
+            << stalledRatio << std::endl;
   PCH_CHECK(localRatio >= 0.05);
   PCH_CHECK(globalRatio >= 0.025);
+  PCH_CHECK(stalledRatio >= 0.025);
   // Plane coordinates never move.
   for (int v = 0; v < cube.Positions.rows(); ++v)
   {
