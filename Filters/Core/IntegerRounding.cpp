@@ -1002,6 +1002,53 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
 
 namespace
 {
+/// The distortion energy sum_t w_t |grad x_t - J_t|^2 of a set of tets as a quadratic form about
+/// start positions X0: E(X) = E0 + sum_a (2 G0_a + L U_a) . U_a with U = X - X0,
+/// L = sum_t w_t G_t G_t^T (G_t the tet's 4 by 3 gradients) and G0 = L X0 - sum_t w_t G_t J_t^T.
+/// One sparse product per evaluation instead of a pass over the tets. About X0, not the origin:
+/// x^T L x and the linear term are large and nearly cancel, and ceres' line search and stopping
+/// rules compare energies to 1e-12.
+struct DistortionQuadratic
+{
+  Eigen::SparseMatrix<double> L;
+  Points X0;
+  Points G0;
+  double E0 = 0.0;
+
+  DistortionQuadratic(const Points& start,
+    const Tets& cells,
+    const std::vector<Eigen::Matrix<double, 4, 3>>& gradients,
+    const std::vector<Eigen::Matrix3d>& targets,
+    const std::vector<double>& weights)
+    : L(start.rows(), start.rows())
+    , X0(start)
+  {
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(16 * static_cast<size_t>(cells.rows()));
+    Points linear = Points::Zero(start.rows(), 3);
+    for (int t = 0; t < static_cast<int>(cells.rows()); ++t)
+    {
+      const Eigen::Matrix<double, 4, 3>& g = gradients[static_cast<size_t>(t)];
+      const Eigen::Matrix3d& target = targets[static_cast<size_t>(t)];
+      const double w = weights[static_cast<size_t>(t)];
+      const Eigen::Matrix4d gram = w * g * g.transpose();
+      Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
+      for (int i = 0; i < 4; ++i)
+      {
+        for (int j = 0; j < 4; ++j)
+        {
+          entries.emplace_back(cells(t, i), cells(t, j), gram(i, j));
+        }
+        linear.row(cells(t, i)) += w * (target * g.row(i).transpose()).transpose();
+        jacobian += start.row(cells(t, i)).transpose() * g.row(i);
+      }
+      E0 += w * (jacobian - target).squaredNorm();
+    }
+    L.setFromTriplets(entries.begin(), entries.end());
+    G0 = L * start - linear;
+  }
+};
+
 /// The energy the nonlinear untangling minimises over the free coordinates: the distortion
 /// energy plus a penalty Weight * sum_t w_t ((Target - r_t) / Target)^2 on every tet whose
 /// volume ratio r_t is below Target (w_t its share of the rest volume). A penalty, not a
@@ -1012,26 +1059,26 @@ public:
   UntangleFunction(const Points& start,
     const Tets& cells,
     const Eigen::SparseMatrix<double>& freeMap,
+    const Eigen::SparseMatrix<double>& freeMapTransposed,
     const Eigen::VectorXd& constant,
-    const std::vector<Eigen::Matrix<double, 4, 3>>& gradients,
-    const std::vector<Eigen::Matrix3d>& targets,
-    const std::vector<double>& restVolume,
+    const DistortionQuadratic& distortion,
+    const std::vector<double>& weights,
     const std::vector<double>& referenceVolume,
-    double totalVolume,
     double target,
     double weight)
     : Cells(cells)
     , FreeMap(freeMap)
-    , FreeMapTransposed(freeMap.transpose())
+    , FreeMapTransposed(freeMapTransposed)
     , Constant(constant)
-    , Gradients(gradients)
-    , Targets(targets)
-    , RestVolume(restVolume)
+    , Distortion(distortion)
+    , Weights(weights)
     , ReferenceVolume(referenceVolume)
     , Target(target)
     , Weight(weight)
-    , TotalVolume(totalVolume)
     , X(start)
+    , U(start.rows(), 3)
+    , LU(start.rows(), 3)
+    , G(start.rows(), 3)
   {
   }
 
@@ -1047,59 +1094,48 @@ public:
   bool Evaluate(const double* y, double* cost, double* gradient) const override
   {
     this->Scatter(y, this->X);
-    Points g;
+    this->U = this->X - this->Distortion.X0;
+    this->LU.noalias() = this->Distortion.L * this->U;
+    double energy =
+      this->Distortion.E0 + (this->U.cwiseProduct(2.0 * this->Distortion.G0 + this->LU)).sum();
     if (gradient)
     {
-      g = Points::Zero(this->X.rows(), 3);
+      this->G = 2.0 * (this->Distortion.G0 + this->LU);
     }
-    double energy = 0.0;
+    // The penalty: only the few tets below the target contribute.
     for (int t = 0; t < static_cast<int>(this->Cells.rows()); ++t)
     {
-      const double w = this->RestVolume[t] / this->TotalVolume;
-      Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
-      for (int i = 0; i < 4; ++i)
-      {
-        jacobian += this->X.row(this->Cells(t, i)).transpose() * this->Gradients[t].row(i);
-      }
-      const Eigen::Matrix3d difference = jacobian - this->Targets[t];
-      energy += w * difference.squaredNorm();
       const Eigen::Vector3d a = this->X.row(this->Cells(t, 0)).transpose();
       const Eigen::Vector3d b = this->X.row(this->Cells(t, 1)).transpose();
       const Eigen::Vector3d c = this->X.row(this->Cells(t, 2)).transpose();
       const Eigen::Vector3d d = this->X.row(this->Cells(t, 3)).transpose();
-      const double ratio = (b - a).dot((c - a).cross(d - a)) / (6.0 * this->ReferenceVolume[t]);
+      const Eigen::Vector3d gb = (c - a).cross(d - a);
+      const double ratio = (b - a).dot(gb) / (6.0 * this->ReferenceVolume[t]);
       const double shortfall = (this->Target - ratio) / this->Target;
-      if (shortfall > 0.0)
+      if (!(shortfall > 0.0))
       {
-        energy += this->Weight * w * shortfall * shortfall;
+        continue;
       }
+      const double w = this->Weights[static_cast<size_t>(t)];
+      energy += this->Weight * w * shortfall * shortfall;
       if (gradient)
       {
-        for (int i = 0; i < 4; ++i)
-        {
-          g.row(this->Cells(t, i)) +=
-            2.0 * w * (difference * this->Gradients[t].row(i).transpose()).transpose();
-        }
-        if (shortfall > 0.0)
-        {
-          // d ratio / d vertex: the gradients of the signed volume, over 6 V_ref.
-          const double scale =
-            -2.0 * this->Weight * w * shortfall / this->Target / (6.0 * this->ReferenceVolume[t]);
-          const Eigen::Vector3d gb = (c - a).cross(d - a);
-          const Eigen::Vector3d gc = (d - a).cross(b - a);
-          const Eigen::Vector3d gd = (b - a).cross(c - a);
-          g.row(this->Cells(t, 0)) += scale * (-(gb + gc + gd)).transpose();
-          g.row(this->Cells(t, 1)) += scale * gb.transpose();
-          g.row(this->Cells(t, 2)) += scale * gc.transpose();
-          g.row(this->Cells(t, 3)) += scale * gd.transpose();
-        }
+        // d ratio / d vertex: the gradients of the signed volume, over 6 V_ref.
+        const double scale =
+          -2.0 * this->Weight * w * shortfall / this->Target / (6.0 * this->ReferenceVolume[t]);
+        const Eigen::Vector3d gc = (d - a).cross(b - a);
+        const Eigen::Vector3d gd = (b - a).cross(c - a);
+        this->G.row(this->Cells(t, 0)) -= scale * (gb + gc + gd).transpose();
+        this->G.row(this->Cells(t, 1)) += scale * gb.transpose();
+        this->G.row(this->Cells(t, 2)) += scale * gc.transpose();
+        this->G.row(this->Cells(t, 3)) += scale * gd.transpose();
       }
     }
     *cost = energy;
     if (gradient)
     {
       Eigen::Map<Eigen::VectorXd>(gradient, this->FreeMap.cols()) =
-        this->FreeMapTransposed * Eigen::Map<const Eigen::VectorXd>(g.data(), g.size());
+        this->FreeMapTransposed * Eigen::Map<const Eigen::VectorXd>(this->G.data(), this->G.size());
     }
     return true;
   }
@@ -1107,16 +1143,17 @@ public:
 private:
   const Tets& Cells;
   const Eigen::SparseMatrix<double>& FreeMap;
-  const Eigen::SparseMatrix<double> FreeMapTransposed;
-  const Eigen::VectorXd Constant;
-  const std::vector<Eigen::Matrix<double, 4, 3>>& Gradients;
-  const std::vector<Eigen::Matrix3d>& Targets;
-  const std::vector<double>& RestVolume;
+  const Eigen::SparseMatrix<double>& FreeMapTransposed;
+  const Eigen::VectorXd& Constant;
+  const DistortionQuadratic& Distortion;
+  const std::vector<double>& Weights;
   const std::vector<double>& ReferenceVolume;
   double Target;
   double Weight;
-  double TotalVolume;
   mutable Points X;
+  mutable Points U;
+  mutable Points LU;
+  mutable Points G;
 };
 } // namespace
 
@@ -1285,30 +1322,31 @@ double PolycubePlaneSolver::UntangleGlobally(Points& positions,
   Tets regionCells(static_cast<Eigen::Index>(tets.size()), 4);
   std::vector<Eigen::Matrix<double, 4, 3>> gradients(tets.size());
   std::vector<Eigen::Matrix3d> targets(tets.size());
-  std::vector<double> restVolume(tets.size());
+  std::vector<double> weights(tets.size());
   std::vector<double> referenceVolume(tets.size());
+  const double totalVolume = std::accumulate(d.RestVolume.begin(), d.RestVolume.end(), 0.0);
   for (size_t i = 0; i < tets.size(); ++i)
   {
     const int t = tets[i];
     regionCells.row(static_cast<Eigen::Index>(i)) = d.Cells.row(t);
     gradients[i] = d.Gradients[static_cast<size_t>(t)];
     targets[i] = d.ReferenceJacobian[static_cast<size_t>(t)];
-    restVolume[i] = d.RestVolume[static_cast<size_t>(t)];
+    weights[i] = d.RestVolume[static_cast<size_t>(t)] / totalVolume;
     referenceVolume[i] = d.ReferenceVolume[static_cast<size_t>(t)];
   }
-  const double totalVolume = std::accumulate(d.RestVolume.begin(), d.RestVolume.end(), 0.0);
+  const DistortionQuadratic distortion(positions, regionCells, gradients, targets, weights);
+  const Eigen::SparseMatrix<double> regionBasisTransposed = regionBasis.transpose();
   // Escalate the penalty until every tet is above half the target (or give up).
   for (double weight : { 1e2, 1e4, 1e6 })
   {
     auto* function = new UntangleFunction(positions,
       regionCells,
       regionBasis,
+      regionBasisTransposed,
       constant,
-      gradients,
-      targets,
-      restVolume,
+      distortion,
+      weights,
       referenceVolume,
-      totalVolume,
       target,
       weight);
     ceres::GradientProblem problem(function);
