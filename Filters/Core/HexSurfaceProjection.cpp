@@ -244,6 +244,12 @@ HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
     this->FaceNormal.push_back((surface.Vertices.row(surface.Faces(f, 1)).transpose() - a)
                                  .cross(surface.Vertices.row(surface.Faces(f, 2)).transpose() - a)
                                  .normalized());
+    Eigen::AlignedBox3d box;
+    for (int k = 0; k < 3; ++k)
+    {
+      box.extend(surface.Vertices.row(surface.Faces(f, k)).transpose());
+    }
+    this->FaceBox.push_back(box);
     for (int e = 0; e < 3; ++e)
     {
       const int a = surface.Faces(f, e);
@@ -455,7 +461,8 @@ int HexSurfaceProjection::Nearest(const Eigen::Vector3d& p,
   closest = p;
   auto consider = [&](int f)
   {
-    if (!accept(f))
+    // Strictly farther only: a tie must still be compared by face index.
+    if (this->FaceBox[static_cast<size_t>(f)].squaredExteriorDistance(p) > best || !accept(f))
     {
       return;
     }

@@ -13,6 +13,7 @@
 #include "MeshTypes.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <map>
@@ -131,6 +132,9 @@ private:
   std::unique_ptr<TriangleGrid> Grid;
   int Released = 0;
   std::vector<Eigen::Vector3d> FaceNormal; ///< #F unit normals
+  /// #F bounding boxes: a triangle whose box is farther than the nearest one found so far
+  /// cannot be nearer, and is skipped without computing its closest point.
+  std::vector<Eigen::AlignedBox3d> FaceBox;
   /// #V: the normal of a Surface vertex's nearest triangle when it became one; beyond its own
   /// chart it only takes triangles facing the same side.
   std::vector<Eigen::Vector3d> ReferenceNormal;
