@@ -3,6 +3,7 @@
 
 #include "CoordinateRelations.h"
 #include "PolycubePlaneRelaxation.h"
+#include "TetDistortionQuadratic.h"
 
 #include "DisjointSets.h"
 #include <Eigen/Cholesky>
@@ -1002,55 +1003,8 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
 
 namespace
 {
-/// The distortion energy sum_t w_t |grad x_t - J_t|^2 of a set of tets as a quadratic form about
-/// start positions X0: E(X) = E0 + sum_a (2 G0_a + L U_a) . U_a with U = X - X0,
-/// L = sum_t w_t G_t G_t^T (G_t the tet's 4 by 3 gradients) and G0 = L X0 - sum_t w_t G_t J_t^T.
-/// One sparse product per evaluation instead of a pass over the tets. About X0, not the origin:
-/// x^T L x and the linear term are large and nearly cancel, and ceres' line search and stopping
-/// rules compare energies to 1e-12.
-struct DistortionQuadratic
-{
-  Eigen::SparseMatrix<double> L;
-  Points X0;
-  Points G0;
-  double E0 = 0.0;
-
-  DistortionQuadratic(const Points& start,
-    const Tets& cells,
-    const std::vector<Eigen::Matrix<double, 4, 3>>& gradients,
-    const std::vector<Eigen::Matrix3d>& targets,
-    const std::vector<double>& weights)
-    : L(start.rows(), start.rows())
-    , X0(start)
-  {
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(16 * static_cast<size_t>(cells.rows()));
-    Points linear = Points::Zero(start.rows(), 3);
-    for (int t = 0; t < static_cast<int>(cells.rows()); ++t)
-    {
-      const Eigen::Matrix<double, 4, 3>& g = gradients[static_cast<size_t>(t)];
-      const Eigen::Matrix3d& target = targets[static_cast<size_t>(t)];
-      const double w = weights[static_cast<size_t>(t)];
-      const Eigen::Matrix4d gram = w * g * g.transpose();
-      Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
-      for (int i = 0; i < 4; ++i)
-      {
-        for (int j = 0; j < 4; ++j)
-        {
-          entries.emplace_back(cells(t, i), cells(t, j), gram(i, j));
-        }
-        linear.row(cells(t, i)) += w * (target * g.row(i).transpose()).transpose();
-        jacobian += start.row(cells(t, i)).transpose() * g.row(i);
-      }
-      E0 += w * (jacobian - target).squaredNorm();
-    }
-    L.setFromTriplets(entries.begin(), entries.end());
-    G0 = L * start - linear;
-  }
-};
-
 /// The energy the nonlinear untangling minimises over the free coordinates: the distortion
-/// energy plus a penalty Weight * sum_t w_t ((Target - r_t) / Target)^2 on every tet whose
+/// energy (as a quadratic form, TetDistortionQuadratic.h) plus a penalty Weight * sum_t w_t ((Target - r_t) / Target)^2 on every tet whose
 /// volume ratio r_t is below Target (w_t its share of the rest volume). A penalty, not a
 /// barrier, so that it can start from inverted tets.
 class UntangleFunction : public ceres::FirstOrderFunction
@@ -1061,7 +1015,7 @@ public:
     const Eigen::SparseMatrix<double>& freeMap,
     const Eigen::SparseMatrix<double>& freeMapTransposed,
     const Eigen::VectorXd& constant,
-    const DistortionQuadratic& distortion,
+    const TetDistortionQuadratic& distortion,
     const std::vector<double>& weights,
     const std::vector<double>& referenceVolume,
     double target,
@@ -1076,8 +1030,6 @@ public:
     , Target(target)
     , Weight(weight)
     , X(start)
-    , U(start.rows(), 3)
-    , LU(start.rows(), 3)
     , G(start.rows(), 3)
   {
   }
@@ -1094,14 +1046,7 @@ public:
   bool Evaluate(const double* y, double* cost, double* gradient) const override
   {
     this->Scatter(y, this->X);
-    this->U = this->X - this->Distortion.X0;
-    this->LU.noalias() = this->Distortion.L * this->U;
-    double energy =
-      this->Distortion.E0 + (this->U.cwiseProduct(2.0 * this->Distortion.G0 + this->LU)).sum();
-    if (gradient)
-    {
-      this->G = 2.0 * (this->Distortion.G0 + this->LU);
-    }
+    double energy = this->Distortion.Evaluate(this->X, gradient ? &this->G : nullptr);
     // The penalty: only the few tets below the target contribute.
     for (int t = 0; t < static_cast<int>(this->Cells.rows()); ++t)
     {
@@ -1145,14 +1090,12 @@ private:
   const Eigen::SparseMatrix<double>& FreeMap;
   const Eigen::SparseMatrix<double>& FreeMapTransposed;
   const Eigen::VectorXd& Constant;
-  const DistortionQuadratic& Distortion;
+  const TetDistortionQuadratic& Distortion;
   const std::vector<double>& Weights;
   const std::vector<double>& ReferenceVolume;
   double Target;
   double Weight;
   mutable Points X;
-  mutable Points U;
-  mutable Points LU;
   mutable Points G;
 };
 } // namespace
@@ -1334,7 +1277,7 @@ double PolycubePlaneSolver::UntangleGlobally(Points& positions,
     weights[i] = d.RestVolume[static_cast<size_t>(t)] / totalVolume;
     referenceVolume[i] = d.ReferenceVolume[static_cast<size_t>(t)];
   }
-  const DistortionQuadratic distortion(positions, regionCells, gradients, targets, weights);
+  const TetDistortionQuadratic distortion(positions, regionCells, gradients, targets, weights);
   const Eigen::SparseMatrix<double> regionBasisTransposed = regionBasis.transpose();
   // Escalate the penalty until every tet is above half the target (or give up).
   for (double weight : { 1e2, 1e4, 1e6 })
