@@ -248,21 +248,38 @@ void TestSolver()
   PCH_CHECK(solver.Energy(positions) > 0.0);
 }
 
+/// A block of unit cubes with its plane solver, and its positions with the free vertex at
+/// (1, 1, 1) pushed through the face x = 2 of its neighbours.
+struct TangledPolycube
+{
+  Polycube Cube;
+  ChartPlanes Charts;
+  PolycubePlaneSolver Solver;
+  Points Tangled;
+  int Pushed = -1;
+
+  explicit TangledPolycube(const std::vector<std::array<int, 3>>& cells)
+    : Cube(Cubes(cells))
+  {
+    PCH_CHECK(ComputeChartPlanes(Cube.Positions, Cube.Cells, Cube.Labels, Charts).Ok());
+    PCH_CHECK(Solver.Build(Cube.Positions, Cube.Positions, Cube.Cells, Charts).Ok());
+    for (int v = 0; v < Cube.Positions.rows(); ++v)
+    {
+      Pushed = Cube.Positions.row(v) == Eigen::RowVector3d(1.0, 1.0, 1.0) ? v : Pushed;
+    }
+    Tangled = Cube.Positions;
+    Tangled.row(Pushed) << 2.3, 1.2, 0.95;
+  }
+};
+
 /// Both untanglers repair a polycube whose free vertex was pushed through its neighbours.
 void TestUntangle()
 {
-  const Polycube cube = Cubes(BlockCells(2, 2, 2));
-  ChartPlanes charts;
-  PCH_CHECK(ComputeChartPlanes(cube.Positions, cube.Cells, cube.Labels, charts).Ok());
-  PolycubePlaneSolver solver;
-  PCH_CHECK(solver.Build(cube.Positions, cube.Positions, cube.Cells, charts).Ok());
-  int centre = -1;
-  for (int v = 0; v < cube.Positions.rows(); ++v)
-  {
-    centre = cube.Positions.row(v) == Eigen::RowVector3d(1.0, 1.0, 1.0) ? v : centre;
-  }
-  Points tangled = cube.Positions;
-  tangled.row(centre) << 2.3, 1.2, 0.95; // through the face x = 2
+  const TangledPolycube setup(BlockCells(2, 2, 2));
+  const Polycube& cube = setup.Cube;
+  const ChartPlanes& charts = setup.Charts;
+  const PolycubePlaneSolver& solver = setup.Solver;
+  const Points& tangled = setup.Tangled;
   PCH_CHECK(solver.MinVolumeRatio(tangled) < 0.0);
   Points local = tangled;
   const double localRatio = solver.Untangle(local, 0.05);
@@ -293,18 +310,12 @@ void TestUntangle()
 /// tangled at one end, the far end stays exactly where the linear solve put it.
 void TestUntangleGloballyIsLocal()
 {
-  const Polycube bar = Cubes(BlockCells(16, 2, 2));
-  ChartPlanes charts;
-  PCH_CHECK(ComputeChartPlanes(bar.Positions, bar.Cells, bar.Labels, charts).Ok());
-  PolycubePlaneSolver solver;
-  PCH_CHECK(solver.Build(bar.Positions, bar.Positions, bar.Cells, charts).Ok());
-  int pushed = -1;
-  for (int v = 0; v < bar.Positions.rows(); ++v)
-  {
-    pushed = bar.Positions.row(v) == Eigen::RowVector3d(1.0, 1.0, 1.0) ? v : pushed;
-  }
-  Points tangled = bar.Positions;
-  tangled.row(pushed) << 2.3, 1.2, 0.95;
+  TangledPolycube setup(BlockCells(16, 2, 2));
+  const Polycube& bar = setup.Cube;
+  const ChartPlanes& charts = setup.Charts;
+  const PolycubePlaneSolver& solver = setup.Solver;
+  Points& tangled = setup.Tangled;
+  const int pushed = setup.Pushed;
   // The rest of the bar slightly off its optimum, so that a global solve would move it.
   for (int v = 0; v < tangled.rows(); ++v)
   {
