@@ -1004,9 +1004,10 @@ double PolycubePlaneSolver::Untangle(Points& positions, double target) const
 namespace
 {
 /// The energy the nonlinear untangling minimises over the free coordinates: the distortion
-/// energy (as a quadratic form, TetDistortionQuadratic.h) plus a penalty Weight * sum_t w_t ((Target - r_t) / Target)^2 on every tet whose
-/// volume ratio r_t is below Target (w_t its share of the rest volume). A penalty, not a
-/// barrier, so that it can start from inverted tets.
+/// energy (a quadratic form, TetDistortionQuadratic.h) plus a penalty
+/// Weight * sum_t w_t ((Target - r_t) / Target)^2 on every tet whose volume ratio r_t is below
+/// Target (w_t its share of the rest volume). A penalty, not a barrier, so that it can start
+/// from inverted tets.
 class UntangleFunction : public ceres::FirstOrderFunction
 {
 public:
@@ -1098,10 +1099,7 @@ private:
   mutable Points X;
   mutable Points G;
 };
-} // namespace
 
-namespace
-{
 /// Ends an L-BFGS run of the untangling once the count of tets below a ratio has not fallen
 /// for `Window` iterations: where the charts cannot all be flat some tets cannot be freed, and
 /// the iterations after the last one freed only polish the distortion at full cost.
@@ -1142,8 +1140,8 @@ public:
       this->Fewest = below;
       this->LastFall = summary.iteration;
     }
-    return summary.iteration - this->LastFall >= this->Window ? ceres::SOLVER_TERMINATE_SUCCESSFULLY
-                                                             : ceres::SOLVER_CONTINUE;
+    const bool stalled = summary.iteration - this->LastFall >= this->Window;
+    return stalled ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }
 
 private:

@@ -88,8 +88,7 @@ void TestAgreesWithDirectSum()
     Points gradient;
     const double energy = form.Evaluate(x, &gradient);
     std::cout << "displacement " << scale << ": energy " << energy << " direct " << expected
-              << ", gradient difference " << (gradient - direct).cwiseAbs().maxCoeff()
-              << std::endl;
+              << ", gradient difference " << (gradient - direct).cwiseAbs().maxCoeff() << std::endl;
     PCH_CHECK(std::fabs(energy - expected) <= 1e-11 * expected);
     PCH_CHECK((gradient - direct).cwiseAbs().maxCoeff() <= 1e-10 * direct.cwiseAbs().maxCoeff());
     PCH_CHECK(form.Evaluate(x) == energy); // the energy does not depend on asking for the gradient
