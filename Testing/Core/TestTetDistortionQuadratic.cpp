@@ -6,8 +6,6 @@
 
 #include "TestAssert.h"
 
-#include <Eigen/Geometry>
-
 #include <cmath>
 #include <iostream>
 #include <random>
