@@ -129,6 +129,24 @@ public:
   double CellSize() const { return this->Cell; }
   int MaxRing() const { return std::max({ this->Dims[0], this->Dims[1], this->Dims[2] }); }
 
+  /// Distance from p to the walls of its own cell, slightly understated so that rounding cannot
+  /// overstate it; 0 when p is outside the grid (its cell is then a clamped one).
+  double WallDistance(const Eigen::Vector3d& p) const
+  {
+    double wall = std::numeric_limits<double>::max();
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = (p[a] - this->Origin[a]) / this->Cell;
+      if (!(x >= 0.0 && x < this->Dims[a]))
+      {
+        return 0.0;
+      }
+      const double fraction = x - std::floor(x);
+      wall = std::min(wall, std::min(fraction, 1.0 - fraction));
+    }
+    return std::max(0.0, wall - 1e-9) * this->Cell;
+  }
+
   /// Calls visit(f) for the triangles binned within `ring` cells of p's cell, skipping the
   /// cells within `inner` cells (already searched; -1 for none). A triangle spanning several
   /// cells may be visited more than once.
@@ -481,7 +499,21 @@ int HexSurfaceProjection::Nearest(const Eigen::Vector3d& p,
   // The nearest triangle found within `ring` cells is the nearest overall once it is closer
   // than `ring` cells: any closer triangle would have been binned in the searched cells.
   const TriangleGrid& grid = *this->Grid;
-  for (int ring = 1, inner = -1;; inner = ring, ring *= 2)
+  // p's own cell first: a vertex on or near the surface usually finds its triangle there, closer
+  // than the cell's walls, and then nothing outside the cell can be as close (a triangle that
+  // reaches into the ball about p up to that distance crosses the cell and is binned in it).
+  int inner = -1;
+  const double wall = grid.WallDistance(p);
+  if (wall > 0.0)
+  {
+    grid.Visit(p, 0, -1, consider);
+    if (std::sqrt(best) < wall)
+    {
+      return nearest;
+    }
+    inner = 0;
+  }
+  for (int ring = 1;; inner = ring, ring *= 2)
   {
     grid.Visit(p, ring, inner, consider);
     if (std::sqrt(best) <= ring * grid.CellSize())
