@@ -34,6 +34,10 @@ namespace
 {
 namespace names = polycubehex::ArrayNames;
 
+// The header spells the default out to stay free of the core's headers.
+static_assert(polycubehex::DefaultSoftFeatureAngle == 20.0,
+  "vtkHexExtractFilter::SoftFeatureAngle's default must follow the core's");
+
 /// Reads the deform filter's output into the core's input, or says what is missing.
 bool ToPolycubeTetMesh(vtkUnstructuredGrid* input,
   polycubehex::PolycubeTetMesh& mesh,
@@ -208,6 +212,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.Untangling = this->Untangling;
   params.MapSmoothing = this->MapSmoothing;
   params.RoundingCandidates = this->RoundingCandidates;
+  params.SoftFeatureAngle = this->SoftFeatureAngle;
   auto progress = [this](double fraction)
   {
     this->UpdateProgress(0.8 * fraction);
@@ -295,6 +300,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "InvertedHexCountAfterUntangling", result.InvertedHexCountAfterUntangling);
   polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "ReleasedBoundaryVertexCount", result.ReleasedBoundaryVertexCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RemovedDoubletHexCount", result.RemovedDoubletHexCount);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RemovedPinchHexCount", result.RemovedPinchHexCount);
@@ -336,7 +343,9 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Smoothing: " << this->Smoothing << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "Untangling: " << this->Untangling << "\n";
+  os << indent << "MapSmoothing: " << this->MapSmoothing << "\n";
   os << indent << "RoundingCandidates: " << this->RoundingCandidates << "\n";
+  os << indent << "SoftFeatureAngle: " << this->SoftFeatureAngle << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";
 }

@@ -102,6 +102,17 @@ public:
   ///@}
 
   ///@{
+  /// With Smoothing: a boundary vertex on a polycube edge or corner may leave its feature curve
+  /// and slide on the input surface across its charts where the input's normals about it vary
+  /// by at most this many degrees (a smooth region the polycube cut with an edge). 0 keeps
+  /// them on their curves and corners except where one forces a flat or inverted hex (the
+  /// untangling releases those whatever the angle); larger values trade feature fidelity for
+  /// hex quality. ReleasedBoundaryVertexCount reports how many left. Default 20, in [0, 90].
+  vtkSetClampMacro(SoftFeatureAngle, double, 0.0, 90.0);
+  vtkGetMacro(SoftFeatureAngle, double);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -138,6 +149,7 @@ protected:
   bool Untangling = true;
   bool MapSmoothing = false;
   int RoundingCandidates = 4;
+  double SoftFeatureAngle = 20.0; // the core's DefaultSoftFeatureAngle (checked in the .cxx)
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;
 

@@ -4,7 +4,7 @@
 can be tuned in seconds instead of re-running the cuts, frames and deformation each time.
 
     PYTHONPATH=build/lib/python3/dist-packages python3.11 Testing/Benchmark/hex_stage.py \
-        ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--no-padding-placement] [--map-smoothing] \
+        ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--no-padding-placement] [--map-smoothing] [--soft-feature-angle 20] \
         [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
 
 The first run writes <cache>/<model>_<guidance>.vtu (the deformation's port 0, its field data
@@ -63,6 +63,7 @@ def main():
     parser.add_argument("--no-padding", action="store_true")
     parser.add_argument("--no-padding-placement", action="store_true")
     parser.add_argument("--map-smoothing", action="store_true")
+    parser.add_argument("--soft-feature-angle", type=float, default=None)
     parser.add_argument("--cache", default="/tmp/polycubehex-polycubes")
     parser.add_argument("--output", help="write the hexes (.vtu)")
     parser.add_argument("--worst", type=int, default=0)
@@ -75,6 +76,8 @@ def main():
     extract.SetPadding(0 if args.no_padding else 1)
     extract.SetPaddingPlacement(0 if args.no_padding_placement else 1)
     extract.SetMapSmoothing(1 if args.map_smoothing else 0)
+    if args.soft_feature_angle is not None:
+        extract.SetSoftFeatureAngle(args.soft_feature_angle)
     start = time.perf_counter()
     hexes = run_filter(extract, polycube)
     print("hex stage: %.2f s" % (time.perf_counter() - start))

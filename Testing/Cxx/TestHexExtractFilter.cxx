@@ -211,6 +211,34 @@ int main(int, char*[])
     PCH_CHECK(FieldValue(smoothed->GetOutput(0), "PlacedPaddingVertexCount") == 0);
   }
 
+  // SoftFeatureAngle: the box's edges are sharp (the normals about them 45 degrees from their
+  // mean), so the default 20 degrees keeps every edge and corner vertex on its feature; at 90
+  // degrees every box edge counts as smooth and its vertices may leave it.
+  {
+    const double slab[3] = { 2.0, 1.0, 1.0 };
+    double released[2] = { -1.0, -1.0 };
+    for (int i : { 0, 1 })
+    {
+      vtkNew<vtkHexExtractFilter> extract;
+      extract->SetInputData(MakeBoxPolycube(2, slab));
+      extract->SetTargetHexCount(1000);
+      extract->SetNumberOfDistanceSamples(20000);
+      PCH_CHECK_NEAR(extract->GetSoftFeatureAngle(), 20.0, 0.0);
+      if (i == 1)
+      {
+        extract->SetSoftFeatureAngle(90.0);
+      }
+      extract->Update();
+      vtkUnstructuredGrid* hexes = extract->GetOutput(0);
+      released[i] = FieldValue(hexes, "ReleasedBoundaryVertexCount");
+      PCH_CHECK(FieldValue(hexes, "ValidHexMesh") == 1);
+    }
+    std::cout << "slab, released feature vertices at 20 and 90 degrees: " << released[0] << ", "
+              << released[1] << "\n";
+    PCH_CHECK(released[0] == 0.0);
+    PCH_CHECK(released[1] > 0.0);
+  }
+
   // Refusals: no labels, not tets, an empty grid.
   vtkNew<ErrorCapture> errors;
   {
