@@ -390,6 +390,7 @@ Status FramePoissonStart(WorkMesh& mesh,
   {
     normal.coeffRef(i, i) += mu;
   }
+  const SerialOpenMPScope serial; // CHOLMOD's per-supernode threads cost more than they save
   SparseCholesky solver;
   solver.AnalyzePattern(normal);
   if (!solver.Factorize(normal))

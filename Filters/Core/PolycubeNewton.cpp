@@ -94,6 +94,7 @@ public:
   /// Factorises the blocks of hy + mu I; false if a block is not positive definite.
   bool Factorize(const SparseMatrix& hy, const std::vector<int>& axis, double mu)
   {
+    const SerialOpenMPScope serial; // the three blocks are factorised in parallel already
     if (hy.nonZeros() != this->SourceNonZeros)
     {
       this->Build(hy, axis);

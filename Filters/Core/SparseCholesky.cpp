@@ -3,6 +3,8 @@
 
 #include <Eigen/CholmodSupport>
 
+#include <dlfcn.h>
+
 namespace polycubehex
 {
 
@@ -39,6 +41,42 @@ bool SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& a, double shif
 Eigen::VectorXd SparseCholesky::Solve(const Eigen::VectorXd& b) const
 {
   return this->Data->Solver.solve(b);
+}
+
+namespace
+{
+// The OpenMP runtime's own entry points, looked up in the process (CHOLMOD loads the runtime),
+// so that the core needs no OpenMP flags of its own: compiled with them, Eigen would start
+// parallelising its products too.
+using GetLevels = int (*)();
+using SetLevels = void (*)(int);
+GetLevels OpenMPGetMaxActiveLevels()
+{
+  return reinterpret_cast<GetLevels>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+}
+SetLevels OpenMPSetMaxActiveLevels()
+{
+  return reinterpret_cast<SetLevels>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+}
+} // namespace
+
+SerialOpenMPScope::SerialOpenMPScope()
+{
+  const GetLevels get = OpenMPGetMaxActiveLevels();
+  const SetLevels set = OpenMPSetMaxActiveLevels();
+  if (get && set)
+  {
+    this->Saved = get();
+    set(0); // no active parallel region: every region runs on the thread that meets it
+  }
+}
+
+SerialOpenMPScope::~SerialOpenMPScope()
+{
+  if (this->Saved >= 0)
+  {
+    OpenMPSetMaxActiveLevels()(this->Saved);
+  }
 }
 
 } // namespace polycubehex
