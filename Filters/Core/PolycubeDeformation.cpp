@@ -390,10 +390,15 @@ Status FramePoissonStart(WorkMesh& mesh,
   {
     normal.coeffRef(i, i) += mu;
   }
-  const SerialOpenMPScope serial; // CHOLMOD's per-supernode threads cost more than they save
   SparseCholesky solver;
-  solver.AnalyzePattern(normal);
-  if (!solver.Factorize(normal))
+  bool factorized = false;
+  {
+    // CHOLMOD's per-supernode regions are too small to pay for their threads.
+    const SerialOpenMPScope serial;
+    solver.AnalyzePattern(normal);
+    factorized = solver.Factorize(normal);
+  }
+  if (!factorized)
   {
     return Status::Failure("ComputePolycube: the frame-guided Poisson system is singular");
   }

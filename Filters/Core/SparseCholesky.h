@@ -42,8 +42,9 @@ private:
 
 /// While alive, OpenMP parallel regions run on a single thread. CHOLMOD's supernodal
 /// factorisation opens a region of up to four threads per supernode (to clear and assemble it),
-/// and the solvers here already factorise their three blocks on threads of their own: on 2
-/// cores those regions cost more in thread wake-ups and spinning than they save (kitten's l1
+/// too little work to pay for the threads, and the polycube solver already factorises its three
+/// blocks on threads of its own: on 2 cores those regions cost more in thread wake-ups and
+/// spinning than they save (kitten's l1
 /// polycube: 37-39 s wall and 6.7 s system time with them, 30-33 s and 2.7 s without, the same
 /// polycube). The setting (max-active-levels) is global to the process, so create the scope on
 /// one thread around the factorisations only; it restores the previous value. Without an OpenMP
