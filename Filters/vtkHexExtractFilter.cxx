@@ -213,6 +213,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.MapSmoothing = this->MapSmoothing;
   params.RoundingCandidates = this->RoundingCandidates;
   params.SoftFeatureAngle = this->SoftFeatureAngle;
+  params.Polish = this->Polish;
   auto progress = [this](double fraction)
   {
     this->UpdateProgress(0.8 * fraction);
@@ -296,6 +297,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMinAfterUntangling", result.ScaledJacobianMinAfterUntangling);
   polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "ScaledJacobianMinBeforePolish", result.ScaledJacobianMinBeforePolish);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMeanAfterUntangling", result.ScaledJacobianMeanAfterUntangling);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "InvertedHexCountAfterUntangling", result.InvertedHexCountAfterUntangling);
@@ -346,6 +349,7 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MapSmoothing: " << this->MapSmoothing << "\n";
   os << indent << "RoundingCandidates: " << this->RoundingCandidates << "\n";
   os << indent << "SoftFeatureAngle: " << this->SoftFeatureAngle << "\n";
+  os << indent << "Polish: " << (this->Polish ? "On" : "Off") << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";
 }

@@ -113,6 +113,17 @@ public:
   ///@}
 
   ///@{
+  /// With Smoothing: after the smoothing sweeps, polish the worst hexes. The sweeps move one
+  /// vertex at a time and stall where two hexes around it are tied for its worst; the polish
+  /// climbs a soft minimum of the corners' scaled Jacobians of the hexes near the minimum, one
+  /// vertex at a time and then all of them together, boundary vertices kept on the surface.
+  /// The minimum never decreases; ScaledJacobianMinBeforePolish reports it before. Default on.
+  vtkSetMacro(Polish, bool);
+  vtkGetMacro(Polish, bool);
+  vtkBooleanMacro(Polish, bool);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -150,6 +161,7 @@ protected:
   bool MapSmoothing = false;
   int RoundingCandidates = 4;
   double SoftFeatureAngle = 20.0; // the core's DefaultSoftFeatureAngle (checked in the .cxx)
+  bool Polish = true;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;
 

@@ -561,6 +561,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     {
       HexSmoothingParameters smoothing;
       smoothing.Iterations = params.SmoothingIterations;
+      if (!params.Polish)
+      {
+        smoothing.PolishPasses = 0;
+      }
       HexSmoothingResult smoothed;
       status = smoothHexMesh(mesh,
         projection,
@@ -572,6 +576,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         return status;
       }
       result.SmoothingSweeps = smoothed.Sweeps;
+      result.ScaledJacobianMinBeforePolish = smoothed.MinBeforePolish;
     }
     result.ReleasedBoundaryVertexCount = projection.ReleasedCount();
   }

@@ -70,6 +70,10 @@ struct HexExtractionParameters
   /// the extraction folded. Each leaves a dent in the boundary (rockerarm Uniform: Hausdorff
   /// distance about 9 to 18.5 for a valid mesh).
   bool RemoveDoublets = true;
+  /// With Smoothing: after the sweeps, polish the worst hexes by gradient steps on a soft
+  /// minimum of their corners' scaled Jacobians (HexSmoothing.h; default on). The minimum
+  /// never decreases.
+  bool Polish = true;
   /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
   /// the surface across its charts where the input's normals about it vary by at most this
   /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).
@@ -149,6 +153,8 @@ struct HexExtractionResult
   double ScaledJacobianMinBeforeSmoothing = 0.0;
   double ScaledJacobianMeanBeforeSmoothing = 0.0;
   int SmoothingSweeps = 0;
+  /// Minimum scaled Jacobian after the sweeps, before the polish (the final one without it).
+  double ScaledJacobianMinBeforePolish = 0.0;
   /// After the untangling, before the local smoothing (equal to the raw values without it).
   double ScaledJacobianMinAfterUntangling = 0.0;
   double ScaledJacobianMeanAfterUntangling = 0.0;

@@ -25,16 +25,15 @@ double NormalisedDeterminant(const Eigen::Vector3d& a,
 }
 } // namespace
 
-double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& x)
+std::array<double, 9> HexCornerScaledJacobians(const Eigen::Matrix<double, 8, 3>& x)
 {
-  double result = std::numeric_limits<double>::max();
+  std::array<double, 9> result;
   for (int c = 0; c < 8; ++c)
   {
     const Eigen::Vector3d origin = x.row(c).transpose();
-    result = std::min(result,
-      NormalisedDeterminant(x.row(HexCornerNeighbours[c][0]).transpose() - origin,
-        x.row(HexCornerNeighbours[c][1]).transpose() - origin,
-        x.row(HexCornerNeighbours[c][2]).transpose() - origin));
+    result[c] = NormalisedDeterminant(x.row(HexCornerNeighbours[c][0]).transpose() - origin,
+      x.row(HexCornerNeighbours[c][1]).transpose() - origin,
+      x.row(HexCornerNeighbours[c][2]).transpose() - origin);
   }
   // The Jacobian at the centre uses the three principal axes (differences of opposite faces).
   const Eigen::Vector3d e1 =
@@ -46,7 +45,14 @@ double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& x)
   const Eigen::Vector3d e3 =
     (x.row(4) + x.row(5) + x.row(6) + x.row(7) - x.row(0) - x.row(1) - x.row(2) - x.row(3))
       .transpose();
-  return std::min(result, NormalisedDeterminant(e1, e2, e3));
+  result[8] = NormalisedDeterminant(e1, e2, e3);
+  return result;
+}
+
+double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& x)
+{
+  const std::array<double, 9> values = HexCornerScaledJacobians(x);
+  return *std::min_element(values.begin(), values.end());
 }
 
 double HexScaledJacobian(const HexMesh& mesh, int h)

@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 namespace polycubehex
 {
 
@@ -22,6 +24,10 @@ inline constexpr int HexCornerNeighbours[8][3] = { { 1, 3, 4 },
   { 4, 6, 1 },
   { 5, 7, 2 },
   { 6, 4, 3 } };
+
+/// The nine values whose minimum is the scaled Jacobian: the normalised Jacobian determinant at
+/// each corner (VTK's node order) and, last, at the centre.
+std::array<double, 9> HexCornerScaledJacobians(const Eigen::Matrix<double, 8, 3>& corners);
 
 /// Scaled Jacobian of one hex given its 8 corners in VTK's node order. 1 for a box, <= 0 for a
 /// hex inverted or flat at some corner; 0 when an edge has zero length.

@@ -1,35 +1,366 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HexSmoothing.h"
 
-#include "HexPadding.h"
 #include "HexScaledJacobian.h"
 #include "HexSurfaceProjection.h"
+#include "HexVertexMoves.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <map>
+#include <vector>
 
 namespace polycubehex
 {
 namespace
 {
-constexpr int HexEdges[12][2] = { { 0, 1 },
-  { 1, 2 },
-  { 2, 3 },
-  { 3, 0 },
-  { 4, 5 },
-  { 5, 6 },
-  { 6, 7 },
-  { 7, 4 },
-  { 0, 4 },
-  { 1, 5 },
-  { 2, 6 },
-  { 3, 7 } };
-
 double MeanOf(const Eigen::VectorXd& values)
 {
   return values.size() > 0 ? values.mean() : 0.0;
+}
+
+using Local = HexVertexMoves::Local;
+
+/// Accepts a move that does not lower the vertex's worst hex, nor invert another around it, and
+/// that first of all has fewer inverted hexes, then a higher minimum, then a higher mean.
+bool Better(const Local& a, const Local& b)
+{
+  return a.Inverted < b.Inverted ||
+    (a.Inverted == b.Inverted &&
+      (a.Min > b.Min + 1e-9 || (a.Min >= b.Min && a.Mean > b.Mean + 1e-9)));
+}
+
+/// Gauss-Seidel sweeps of Laplacian steps and, near the worst hexes, pattern searches. Returns
+/// false when the caller aborted.
+bool RunSweeps(HexVertexMoves& moves,
+  int sweeps,
+  const HexSmoothingParameters& params,
+  HexSmoothingResult& result,
+  const std::function<bool(double)>& report)
+{
+  const Points& x = moves.Mesh().Vertices;
+  // The Laplacian step is taken when it raises the mean quality around the vertex without
+  // creating a hex worse than both the vertex's worst and the mesh's worst at the start of the
+  // sweep; the pattern search maximises the worst hex around the vertex, then the mean. Either
+  // way the mesh's minimum never decreases. On a tangled mesh (a negative floor) neither may
+  // invert another hex around the vertex: a move that keeps the worst hex but inverts a good
+  // one above the floor trades validity for the mean (rockerarm Uniform gained inverted
+  // interior hexes so).
+  double floor = moves.Quality().minCoeff();
+  auto smoother = [&floor](const Local& a, const Local& b)
+  {
+    return a.Mean > b.Mean + 1e-9 && a.Min >= std::min(b.Min, floor) && a.Inverted <= b.Inverted;
+  };
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+  {
+    if (!report(static_cast<double>(sweep) / sweeps))
+    {
+      return false;
+    }
+    for (int v = 0; v < moves.VertexCount(); ++v)
+    {
+      if (moves.Kind(v) == HexVertexKind::Fixed)
+      {
+        continue;
+      }
+      // A feature vertex averages only its neighbours along the same curve (or at its corners).
+      const std::vector<int> along = moves.CurveNeighbours(v);
+      const std::vector<int>& averaged =
+        moves.Kind(v) == HexVertexKind::Feature ? along : moves.Neighbours(v);
+      if (averaged.size() < 2)
+      {
+        continue;
+      }
+      Eigen::Vector3d target = Eigen::Vector3d::Zero();
+      for (int w : averaged)
+      {
+        target += x.row(w).transpose();
+      }
+      target /= static_cast<double>(averaged.size());
+      const double edgeLength = moves.MeanEdgeLength(v);
+      const Eigen::Vector3d old = x.row(v).transpose();
+      Local current = moves.Cached(v);
+
+      // 1. Laplacian: towards the mean of the neighbours, full step, then half, then a quarter.
+      for (double step : { 1.0, 0.5, 0.25 })
+      {
+        if (moves.TryMove(v, old + step * (target - old), current, smoother))
+        {
+          break;
+        }
+      }
+
+      // 2. Pattern search near the worst hexes: axis moves, in the tangent plane on the surface
+      //    and along the curve on a feature, shrinking the step while nothing improves.
+      if (current.Min >= floor + params.WorstBand && current.Min >= params.UntangleBelow)
+      {
+        continue;
+      }
+      const std::vector<Eigen::Vector3d> directions = moves.Directions(v);
+      int tries = 0;
+      for (double step = 0.25 * edgeLength; step > edgeLength / 256.0 && tries < 24; ++tries)
+      {
+        bool improved = false;
+        for (const Eigen::Vector3d& d : directions)
+        {
+          const Eigen::Vector3d here = x.row(v).transpose();
+          improved = moves.TryMove(v, here + step * d, current, Better) ||
+            moves.TryMove(v, here - step * d, current, Better) || improved;
+        }
+        if (!improved)
+        {
+          step *= 0.5;
+        }
+      }
+    }
+    ++result.Sweeps;
+    const double mean = moves.Quality().mean();
+    const double minimum = moves.Quality().minCoeff();
+    const bool progressed =
+      mean - result.MeanAfter >= params.Tolerance || minimum - result.MinAfter >= params.Tolerance;
+    result.MinAfter = minimum;
+    result.MeanAfter = mean;
+    floor = minimum;
+    if (!progressed)
+    {
+      break;
+    }
+  }
+  return true;
+}
+
+/// The nine corner values of hex h (HexCornerScaledJacobians).
+std::array<double, 9> CornerValues(const HexMesh& mesh, int h)
+{
+  Eigen::Matrix<double, 8, 3> corners;
+  for (int k = 0; k < 8; ++k)
+  {
+    corners.row(k) = mesh.Vertices.row(mesh.Cells(h, k));
+  }
+  return HexCornerScaledJacobians(corners);
+}
+
+/// Soft minimum of the corner values of the hexes around v with v at p: lowest - log(sum
+/// exp(-sharpness (value - lowest))) / sharpness, smooth where the hard minimum has kinks.
+double SoftMinimumAt(HexVertexMoves& moves, int v, const Eigen::Vector3d& p, double sharpness)
+{
+  HexMesh& mesh = moves.Mesh();
+  const Eigen::RowVector3d old = mesh.Vertices.row(v);
+  mesh.Vertices.row(v) = p.transpose();
+  std::vector<double> values;
+  values.reserve(9 * moves.HexesOf(v).size());
+  double lowest = std::numeric_limits<double>::max();
+  for (int h : moves.HexesOf(v))
+  {
+    for (double value : CornerValues(mesh, h))
+    {
+      values.push_back(value);
+      lowest = std::min(lowest, value);
+    }
+  }
+  mesh.Vertices.row(v) = old;
+  double sum = 0.0;
+  for (double value : values)
+  {
+    sum += std::exp(-sharpness * (value - lowest));
+  }
+  return lowest - std::log(sum) / sharpness;
+}
+
+/// One vertex climbs the soft minimum of its hexes: central differences along its directions,
+/// then the longest of a few halving steps that Better accepts.
+void ClimbVertex(HexVertexMoves& moves, int v, const HexSmoothingParameters& params)
+{
+  const std::vector<Eigen::Vector3d> directions = moves.Directions(v);
+  const double edgeLength = moves.MeanEdgeLength(v);
+  if (directions.empty() || !(edgeLength > 0.0))
+  {
+    return;
+  }
+  Local current = moves.Cached(v);
+  const double delta = 1e-4 * edgeLength;
+  for (int step = 0; step < params.PolishAscentSteps; ++step)
+  {
+    const Eigen::Vector3d here = moves.Mesh().Vertices.row(v).transpose();
+    Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& d : directions)
+    {
+      const double up =
+        SoftMinimumAt(moves, v, moves.Landing(v, here + delta * d), params.PolishSharpness);
+      const double down =
+        SoftMinimumAt(moves, v, moves.Landing(v, here - delta * d), params.PolishSharpness);
+      gradient += d * (up - down) / (2.0 * delta);
+    }
+    if (!(gradient.norm() > 0.0))
+    {
+      return;
+    }
+    gradient.normalize();
+    bool moved = false;
+    for (double length = 0.25 * edgeLength; length > edgeLength / 1024.0 && !moved; length *= 0.5)
+    {
+      moved = moves.TryMove(v, here + length * gradient, current, Better);
+    }
+    if (!moved)
+    {
+      return;
+    }
+  }
+}
+
+/// All of `vertices` step together along the gradient of the soft minimum of every hex they
+/// touch (the softmax weights frozen at the start), projected back where they may be; kept
+/// when the touched hexes' minimum rises and none more is inverted. False when no step was kept.
+bool ClimbTogether(HexVertexMoves& moves,
+  const std::vector<int>& vertices,
+  const HexSmoothingParameters& params)
+{
+  HexMesh& mesh = moves.Mesh();
+  std::vector<int> touched;
+  for (int v : vertices)
+  {
+    touched.insert(touched.end(), moves.HexesOf(v).begin(), moves.HexesOf(v).end());
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  const double lowest = moves.Quality().minCoeff();
+  std::map<int, std::array<double, 9>> weights;
+  for (int h : touched)
+  {
+    const std::array<double, 9> values = CornerValues(mesh, h);
+    for (int c = 0; c < 9; ++c)
+    {
+      weights[h][c] = std::exp(-params.PolishSharpness * (values[c] - lowest));
+    }
+  }
+  // The weighted sum of the corner values around v; its gradient in v is the soft minimum's,
+  // up to a positive factor, while the weights stay frozen.
+  auto weightedSum = [&](int v)
+  {
+    double sum = 0.0;
+    for (int h : moves.HexesOf(v))
+    {
+      const std::array<double, 9> values = CornerValues(mesh, h);
+      for (int c = 0; c < 9; ++c)
+      {
+        sum += weights[h][c] * values[c];
+      }
+    }
+    return sum;
+  };
+  std::vector<Eigen::Vector3d> start(vertices.size());
+  std::vector<Eigen::Vector3d> gradient(vertices.size(), Eigen::Vector3d::Zero());
+  double largest = 0.0;
+  double edgeLength = 0.0;
+  for (size_t i = 0; i < vertices.size(); ++i)
+  {
+    const int v = vertices[i];
+    start[i] = mesh.Vertices.row(v).transpose();
+    const double length = moves.MeanEdgeLength(v);
+    edgeLength = std::max(edgeLength, length);
+    const double delta = 1e-5 * length;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      mesh.Vertices(v, axis) = start[i][axis] + delta;
+      const double up = weightedSum(v);
+      mesh.Vertices(v, axis) = start[i][axis] - delta;
+      const double down = weightedSum(v);
+      mesh.Vertices(v, axis) = start[i][axis];
+      gradient[i][axis] = (up - down) / (2.0 * delta);
+    }
+    largest = std::max(largest, gradient[i].norm());
+  }
+  if (!(largest > 0.0))
+  {
+    return false;
+  }
+  auto touchedQuality = [&]()
+  {
+    Local local{ std::numeric_limits<double>::max(), 0.0, 0 };
+    for (int h : touched)
+    {
+      const double q = HexScaledJacobian(mesh, h);
+      local.Inverted += q <= 0.0 ? 1 : 0;
+      local.Min = std::min(local.Min, q);
+    }
+    return local;
+  };
+  const Local before = touchedQuality();
+  // The largest vertex moves a tenth of an edge at most, then halving.
+  for (double length = 0.1 * edgeLength; length > 1e-4 * edgeLength; length *= 0.5)
+  {
+    for (size_t i = 0; i < vertices.size(); ++i)
+    {
+      const int v = vertices[i];
+      mesh.Vertices.row(v) =
+        moves.Landing(v, start[i] + length * gradient[i] / largest).transpose();
+    }
+    const Local after = touchedQuality();
+    if (after.Inverted <= before.Inverted && after.Min > before.Min + 1e-9)
+    {
+      for (int v : vertices)
+      {
+        moves.Refresh(v);
+      }
+      return true;
+    }
+  }
+  for (size_t i = 0; i < vertices.size(); ++i)
+  {
+    mesh.Vertices.row(vertices[i]) = start[i].transpose();
+  }
+  return false;
+}
+
+/// The polish: passes over the movable vertices of the hexes within PolishBand of the minimum,
+/// each vertex climbing alone, then all of them together, until a pass lifts the minimum by
+/// less than 1e-5. The minimum never decreases.
+void Polish(HexVertexMoves& moves, const HexSmoothingParameters& params, HexSmoothingResult& result)
+{
+  const HexMesh& mesh = moves.Mesh();
+  const int hexCount = static_cast<int>(mesh.Cells.rows());
+  for (int pass = 0; pass < params.PolishPasses; ++pass)
+  {
+    const Eigen::VectorXd& quality = moves.Quality();
+    const double lowest = quality.minCoeff();
+    std::vector<int> worst;
+    for (int h = 0; h < hexCount; ++h)
+    {
+      if (quality[h] < lowest + params.PolishBand)
+      {
+        for (int k = 0; k < 8; ++k)
+        {
+          if (moves.Kind(mesh.Cells(h, k)) != HexVertexKind::Fixed)
+          {
+            worst.push_back(mesh.Cells(h, k));
+          }
+        }
+      }
+    }
+    std::sort(worst.begin(), worst.end());
+    worst.erase(std::unique(worst.begin(), worst.end()), worst.end());
+    for (int v : worst)
+    {
+      ClimbVertex(moves, v, params);
+    }
+    for (int step = 0; step < params.PolishJointSteps; ++step)
+    {
+      if (!ClimbTogether(moves, worst, params))
+      {
+        break;
+      }
+    }
+    ++result.PolishPasses;
+    if (moves.Quality().minCoeff() < lowest + 1e-5)
+    {
+      break;
+    }
+  }
+  result.MinAfter = moves.Quality().minCoeff();
+  result.MeanAfter = moves.Quality().mean();
 }
 } // namespace
 
@@ -64,265 +395,42 @@ Status smoothHexMesh(HexMesh& mesh,
   {
     return Status::Failure("smoothing needs the kind of every hex vertex");
   }
-  Eigen::VectorXd quality = ComputeHexScaledJacobians(mesh);
-  result.MinBefore = hexCount > 0 ? quality.minCoeff() : 0.0;
-  result.MeanBefore = MeanOf(quality);
+  HexVertexMoves moves(mesh, projection);
+  result.MinBefore = hexCount > 0 ? moves.Quality().minCoeff() : 0.0;
+  result.MeanBefore = MeanOf(moves.Quality());
   result.MinAfter = result.MinBefore;
   result.MeanAfter = result.MeanBefore;
+  result.MinBeforePolish = result.MinBefore;
   result.Sweeps = 0;
+  result.PolishPasses = 0;
   if (hexCount == 0 || params.Iterations <= 0)
   {
     return Status::Success();
   }
 
-  // Incidence: hexes and edge neighbours of each vertex; boundary neighbours through quads.
-  std::vector<std::vector<int>> hexesOf(vertexCount);
-  std::vector<std::vector<int>> neighbours(vertexCount);
-  for (int h = 0; h < hexCount; ++h)
+  // Sweeps; the polish of the worst hexes; a few sweeps, which take back for the mean what the
+  // polish's moves cost it, the new minimum as their floor; the polish once more.
+  const bool polish = params.PolishPasses > 0;
+  const int sweepsAfter = polish ? std::max(0, params.SweepsAfterPolish) : 0;
+  const double total = static_cast<double>(params.Iterations + sweepsAfter);
+  auto stage = [&](double begin, double length)
   {
-    for (int k = 0; k < 8; ++k)
-    {
-      hexesOf[mesh.Cells(h, k)].push_back(h);
-    }
-    for (const auto& edge : HexEdges)
-    {
-      const int a = mesh.Cells(h, edge[0]);
-      const int b = mesh.Cells(h, edge[1]);
-      neighbours[a].push_back(b);
-      neighbours[b].push_back(a);
-    }
+    return [&progress, begin, length, total](double p)
+    { return ReportProgress(progress, (begin + p * length) / total); };
+  };
+  if (!RunSweeps(moves, params.Iterations, params, result, stage(0.0, params.Iterations)))
+  {
+    return Status::Failure("hex smoothing aborted");
   }
-  const Quads quads = ComputeHexBoundaryQuads(mesh);
-  std::vector<std::vector<int>> surfaceNeighbours(vertexCount);
-  std::vector<std::vector<int>> quadsOf(vertexCount);
-  for (int q = 0; q < quads.rows(); ++q)
+  result.MinBeforePolish = result.MinAfter;
+  if (polish)
   {
-    for (int k = 0; k < 4; ++k)
-    {
-      const int a = quads(q, k);
-      quadsOf[a].push_back(q);
-      const int b = quads(q, (k + 1) % 4);
-      surfaceNeighbours[a].push_back(b);
-      surfaceNeighbours[b].push_back(a);
-    }
-  }
-  for (auto* lists : { &neighbours, &surfaceNeighbours })
-  {
-    for (auto& list : *lists)
-    {
-      std::sort(list.begin(), list.end());
-      list.erase(std::unique(list.begin(), list.end()), list.end());
-    }
-  }
-
-  auto project = [&projection](int v, const Eigen::Vector3d& p)
-  { return projection.Project(v, p); };
-  auto kind = [&projection](int v) { return projection.Kind(v); };
-
-  // A feature vertex averages only its neighbours along the same curve (or at its corners).
-  auto contains = [](const std::vector<int>& sorted, int value)
-  { return std::binary_search(sorted.begin(), sorted.end(), value); };
-
-  // The local quality of a vertex: the smallest and the mean scaled Jacobian of its hexes.
-  struct Local
-  {
-    double Min;
-    double Mean;
-    int Inverted; ///< hexes with scaled Jacobian <= 0
-  };
-  // The last evaluation's values per hex, so that an accepted move need not recompute them.
-  std::vector<double> evaluated;
-  auto evaluate = [&](int v)
-  {
-    Local local{ std::numeric_limits<double>::max(), 0.0, 0 };
-    evaluated.clear();
-    for (int h : hexesOf[v])
-    {
-      const double q = HexScaledJacobian(mesh, h);
-      evaluated.push_back(q);
-      local.Inverted += q <= 0.0 ? 1 : 0;
-      local.Min = std::min(local.Min, q);
-      local.Mean += q / static_cast<double>(hexesOf[v].size());
-    }
-    return local;
-  };
-  // The Laplacian step is taken when it raises the mean quality around the vertex without
-  // creating a hex worse than both the vertex's worst and the mesh's worst at the start of the
-  // sweep; the pattern search maximises the worst hex around the vertex, then the mean. Either
-  // way the mesh's minimum never decreases. On a tangled mesh (a negative floor) neither may
-  // invert another hex around the vertex: a move that keeps the worst hex but inverts a good
-  // one above the floor trades validity for the mean (rockerarm Uniform gained inverted
-  // interior hexes so).
-  double floor = result.MinBefore;
-  auto smoother = [&floor](const Local& a, const Local& b)
-  {
-    return a.Mean > b.Mean + 1e-9 && a.Min >= std::min(b.Min, floor) && a.Inverted <= b.Inverted;
-  };
-  auto better = [](const Local& a, const Local& b)
-  {
-    return a.Inverted < b.Inverted ||
-      (a.Inverted == b.Inverted &&
-        (a.Min > b.Min + 1e-9 || (a.Min >= b.Min && a.Mean > b.Mean + 1e-9)));
-  };
-  // The same from `quality`, which always holds the current value of every hex.
-  auto cached = [&](int v)
-  {
-    Local local{ std::numeric_limits<double>::max(), 0.0, 0 };
-    for (int h : hexesOf[v])
-    {
-      local.Inverted += quality[h] <= 0.0 ? 1 : 0;
-      local.Min = std::min(local.Min, quality[h]);
-      local.Mean += quality[h] / static_cast<double>(hexesOf[v].size());
-    }
-    return local;
-  };
-  // Moves a vertex to `candidate` (projected for boundary vertices) if `accept` approves.
-  auto tryMove = [&](int v, Eigen::Vector3d candidate, Local& current, auto&& accept)
-  {
-    if (kind(v) != HexVertexKind::Interior)
-    {
-      candidate = project(v, candidate);
-    }
-    const Eigen::RowVector3d old = mesh.Vertices.row(v);
-    mesh.Vertices.row(v) = candidate.transpose();
-    const Local moved = evaluate(v);
-    if (accept(moved, current))
-    {
-      current = moved;
-      for (size_t i = 0; i < hexesOf[v].size(); ++i)
-      {
-        quality[hexesOf[v][i]] = evaluated[i];
-      }
-      return true;
-    }
-    mesh.Vertices.row(v) = old;
-    return false;
-  };
-
-  std::vector<Eigen::Vector3d> along; // feature neighbours, for the curve's tangent
-  std::vector<Eigen::Vector3d> directions;
-  for (int sweep = 0; sweep < params.Iterations; ++sweep)
-  {
-    if (!ReportProgress(progress, static_cast<double>(sweep) / params.Iterations))
+    Polish(moves, params, result);
+    if (!RunSweeps(moves, sweepsAfter, params, result, stage(params.Iterations, sweepsAfter)))
     {
       return Status::Failure("hex smoothing aborted");
     }
-    for (int v = 0; v < vertexCount; ++v)
-    {
-      if (kind(v) == HexVertexKind::Fixed)
-      {
-        continue;
-      }
-      const std::vector<int>& around =
-        kind(v) == HexVertexKind::Interior ? neighbours[v] : surfaceNeighbours[v];
-      Eigen::Vector3d target = Eigen::Vector3d::Zero();
-      along.clear();
-      int count = 0;
-      double edgeLength = 0.0;
-      for (int w : around)
-      {
-        edgeLength += (mesh.Vertices.row(w) - mesh.Vertices.row(v)).norm();
-        if (kind(v) == HexVertexKind::Feature &&
-          !(contains(projection.Charts(w), projection.Charts(v)[0]) &&
-            contains(projection.Charts(w), projection.Charts(v)[1])))
-        {
-          continue;
-        }
-        target += mesh.Vertices.row(w).transpose();
-        along.push_back(mesh.Vertices.row(w).transpose());
-        ++count;
-      }
-      if (count < 2)
-      {
-        continue;
-      }
-      target /= count;
-      edgeLength /= static_cast<double>(around.size());
-      const Eigen::Vector3d old = mesh.Vertices.row(v).transpose();
-      Local current = cached(v);
-
-      // 1. Laplacian: towards the mean of the neighbours, full step, then half, then a quarter.
-      for (double step : { 1.0, 0.5, 0.25 })
-      {
-        if (tryMove(v, old + step * (target - old), current, smoother))
-        {
-          break;
-        }
-      }
-
-      // 2. Pattern search near the worst hexes: axis moves, in the tangent plane on the surface
-      //    and along the curve on a feature, shrinking the step while nothing improves.
-      if (current.Min >= floor + params.WorstBand && current.Min >= params.UntangleBelow)
-      {
-        continue;
-      }
-      directions.clear();
-      if (kind(v) == HexVertexKind::Interior)
-      {
-        directions = {
-          Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()
-        };
-      }
-      else if (kind(v) == HexVertexKind::Surface)
-      {
-        Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-        for (int q : quadsOf[v])
-        {
-          normal += (mesh.Vertices.row(quads(q, 2)) - mesh.Vertices.row(quads(q, 0)))
-                      .cross(mesh.Vertices.row(quads(q, 3)) - mesh.Vertices.row(quads(q, 1)))
-                      .transpose();
-        }
-        // Any two directions spanning the tangent plane will do; the projection corrects.
-        Eigen::Vector3d u = (mesh.Vertices.row(around[0]) - mesh.Vertices.row(v)).transpose();
-        if (normal.norm() > 0.0)
-        {
-          normal.normalize();
-          u = (u - normal * normal.dot(u)).normalized();
-          directions = { u, normal.cross(u) };
-        }
-        else
-        {
-          directions = {
-            Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()
-          };
-        }
-      }
-      else
-      {
-        const Eigen::Vector3d tangent = along.front() - along.back();
-        if (tangent.norm() > 0.0)
-        {
-          directions = { tangent.normalized() };
-        }
-      }
-      int moves = 0;
-      for (double step = 0.25 * edgeLength; step > edgeLength / 256.0 && moves < 24; ++moves)
-      {
-        bool improved = false;
-        for (const Eigen::Vector3d& d : directions)
-        {
-          const Eigen::Vector3d here = mesh.Vertices.row(v).transpose();
-          improved = tryMove(v, here + step * d, current, better) ||
-            tryMove(v, here - step * d, current, better) || improved;
-        }
-        if (!improved)
-        {
-          step *= 0.5;
-        }
-      }
-    }
-    ++result.Sweeps;
-    const double mean = MeanOf(quality);
-    const double minimum = quality.minCoeff();
-    const bool progressed =
-      mean - result.MeanAfter >= params.Tolerance || minimum - result.MinAfter >= params.Tolerance;
-    result.MinAfter = minimum;
-    result.MeanAfter = mean;
-    floor = minimum;
-    if (!progressed)
-    {
-      break;
-    }
+    Polish(moves, params, result);
   }
   ReportProgress(progress, 1.0);
   return Status::Success();

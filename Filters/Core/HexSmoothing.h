@@ -2,7 +2,8 @@
 // Quality-guarded smoothing of an extracted hex mesh (not in the paper; the paper's meshes are
 // the raw extraction). Each vertex moves towards the mean of its neighbours (Laplacian) when that
 // raises the mean scaled Jacobian of its hexes without going below the mesh's minimum; then,
-// around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes.
+// around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes;
+// last, a polish lifts the worst hexes by gradient steps on a soft minimum of their corners.
 // The mesh's minimum scaled Jacobian never decreases. Boundary vertices stay
 // on the input surface: a vertex on one chart slides on that chart's triangles, a vertex on two
 // charts slides along their common feature curve, a vertex on three or more charts is fixed
@@ -37,6 +38,25 @@ struct HexSmoothingParameters
   /// where the input's normals about it vary by at most this (degrees, default 20; 0 holds
   /// every such vertex on its curve or in place; HexSurfaceProjection).
   double SoftFeatureAngle = DefaultSoftFeatureAngle;
+
+  // The polish of the worst hexes, after the sweeps, where they stall: the sweeps move one
+  // vertex at a time along fixed directions, and stop where two hexes around it are tied for
+  // its worst. The polish climbs a soft minimum of the nine corner values of every hex around
+  // the vertices of the worst hexes (smooth across such ties), each vertex alone, then all of
+  // them together; a few sweeps then take back the mean, and the polish runs once more.
+  /// Passes at most, each over the vertices of the hexes within PolishBand of the minimum
+  /// (default 30; 0 turns the polish off). A pass that lifts the minimum by less than 1e-5 ends it.
+  int PolishPasses = 30;
+  /// Hexes this close to the minimum scaled Jacobian are polished (default 0.05).
+  double PolishBand = 0.05;
+  /// Sharpness of the soft minimum, min - log(sum exp(-s (value - min))) / s (default 40).
+  double PolishSharpness = 40.0;
+  /// Gradient steps of each vertex alone per pass (default 10).
+  int PolishAscentSteps = 10;
+  /// Gradient steps of all the pass's vertices together (default 20).
+  int PolishJointSteps = 20;
+  /// Sweeps between the two polishes (default 5).
+  int SweepsAfterPolish = 5;
 };
 
 /// Quality before and after.
@@ -46,7 +66,9 @@ struct HexSmoothingResult
   double MeanBefore = 0.0;
   double MinAfter = 0.0;
   double MeanAfter = 0.0;
-  int Sweeps = 0;
+  int Sweeps = 0;          ///< sweeps run, those between the polishes included
+  double MinBeforePolish = 0.0; ///< minimum scaled Jacobian after the first sweeps
+  int PolishPasses = 0;    ///< polish passes run, both polishes
 };
 
 /// Smooths `mesh` in place.

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// smoothHexMesh on a cube lattice whose charts are the cube's six faces: the directions each
+// kind of vertex may move in; a jiggled lattice whose minimum scaled Jacobian the sweeps leave
+// low is lifted further by the polish of the worst hexes, which never lowers it, keeps the
+// boundary on the cube and the corners in place; a perfect lattice stays perfect.
+#include "HexScaledJacobian.h"
+#include "HexSmoothing.h"
+#include "HexSurfaceProjection.h"
+#include "HexVertexMoves.h"
+
+#include "TestAssert.h"
+#include "TestHexLattice.h"
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+using namespace polycubehex;
+using polycubehex::testing::Lattice;
+using polycubehex::testing::MakeLattice;
+using polycubehex::testing::SurfaceError;
+
+namespace
+{
+/// Interior vertices move along the three axes, face vertices in their face's plane, edge
+/// vertices along their edge, corners not at all.
+void TestDirections()
+{
+  Lattice lattice = MakeLattice(3);
+  const HexSurfaceProjection projection(lattice.Surface, lattice.VertexCharts, lattice.Mesh, 0.0);
+  HexVertexMoves moves(lattice.Mesh, projection);
+  PCH_CHECK(moves.Directions(lattice.Id(1, 2, 1)).size() == 3);
+  const auto face = moves.Directions(lattice.Id(1, 2, 0)); // on z = 0
+  PCH_CHECK(face.size() == 2);
+  for (const Eigen::Vector3d& d : face)
+  {
+    PCH_CHECK_NEAR(d.z(), 0.0, 1e-12);
+    PCH_CHECK_NEAR(d.norm(), 1.0, 1e-12);
+  }
+  PCH_CHECK_NEAR(face[0].dot(face[1]), 0.0, 1e-12);
+  const auto edge = moves.Directions(lattice.Id(1, 0, 0)); // on y = 0, z = 0
+  PCH_CHECK(edge.size() == 1);
+  PCH_CHECK_NEAR(std::fabs(edge[0].x()), 1.0, 1e-12);
+  PCH_CHECK(moves.Directions(lattice.Id(0, 0, 0)).empty());
+  PCH_CHECK(moves.CurveNeighbours(lattice.Id(1, 0, 0)).size() == 2);
+}
+
+/// Every vertex but the corners jiggled within where its charts allow it, by up to `amount`
+/// hex edges per free coordinate.
+void Jiggle(Lattice& lattice, double amount, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-amount / lattice.N, amount / lattice.N);
+  for (int v = 0; v < lattice.Mesh.Vertices.rows(); ++v)
+  {
+    const std::vector<int>& charts = lattice.VertexCharts[static_cast<size_t>(v)];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      bool held = false;
+      for (int chart : charts)
+      {
+        held = held || chart / 2 == axis;
+      }
+      if (!held)
+      {
+        lattice.Mesh.Vertices(v, axis) += offset(random);
+      }
+    }
+  }
+}
+
+void TestPolishLiftsTheWorstHexes()
+{
+  const int n = 6;
+  Lattice plain = MakeLattice(n);
+  Jiggle(plain, 0.4, 3);
+  Lattice polished = plain;
+  const Points start = plain.Mesh.Vertices;
+  const double jiggled = ComputeHexScaledJacobians(plain.Mesh).minCoeff();
+
+  // Two sweeps leave the lattice far from its cubes, as the real meshes' worst hexes are.
+  HexSmoothingParameters params;
+  params.Iterations = 2;
+  params.SoftFeatureAngle = 0.0;
+  params.SweepsAfterPolish = 0; // so that only the polish differs
+  HexSmoothingParameters without = params;
+  without.PolishPasses = 0;
+  HexSmoothingResult plainResult;
+  HexSmoothingResult polishedResult;
+  PCH_CHECK(
+    smoothHexMesh(plain.Mesh, plain.VertexCharts, plain.Surface, without, plainResult));
+  PCH_CHECK(smoothHexMesh(
+    polished.Mesh, polished.VertexCharts, polished.Surface, params, polishedResult));
+  const Eigen::VectorXd quality = ComputeHexScaledJacobians(polished.Mesh);
+  std::cout << "jiggled lattice: SJ min " << jiggled << ", after 2 sweeps "
+            << plainResult.MinAfter << ", polished " << polishedResult.MinAfter << " in "
+            << polishedResult.PolishPasses << " passes; mean " << plainResult.MeanAfter << " / "
+            << polishedResult.MeanAfter << std::endl;
+
+  PCH_CHECK(plainResult.PolishPasses == 0);
+  PCH_CHECK(plainResult.MinAfter >= jiggled);
+  // The same sweeps first, then a polish that lifts the minimum and never lowers it.
+  PCH_CHECK_NEAR(polishedResult.MinBeforePolish, plainResult.MinAfter, 1e-12);
+  PCH_CHECK(polishedResult.PolishPasses >= 1);
+  PCH_CHECK(polishedResult.MinAfter > plainResult.MinAfter + 0.02);
+  PCH_CHECK(polishedResult.MinAfter > 0.9); // back to near cubes
+  PCH_CHECK_NEAR(polishedResult.MinAfter, quality.minCoeff(), 1e-12);
+  PCH_CHECK_NEAR(polishedResult.MeanAfter, quality.mean(), 1e-12);
+  // The boundary stays on the cube, the corners in place.
+  PCH_CHECK(SurfaceError(polished, polished.Mesh.Vertices) < 1e-9);
+  for (int i : { 0, n })
+  {
+    for (int j : { 0, n })
+    {
+      for (int k : { 0, n })
+      {
+        const int v = polished.Id(i, j, k);
+        PCH_CHECK(polished.Mesh.Vertices.row(v) == start.row(v));
+      }
+    }
+  }
+}
+
+void TestPerfectLatticeStays()
+{
+  Lattice lattice = MakeLattice(4);
+  const Points start = lattice.Mesh.Vertices;
+  HexSmoothingResult result;
+  PCH_CHECK(smoothHexMesh(lattice.Mesh,
+    lattice.VertexCharts,
+    lattice.Surface,
+    HexSmoothingParameters(),
+    result));
+  PCH_CHECK_NEAR(result.MinAfter, 1.0, 1e-12);
+  PCH_CHECK((lattice.Mesh.Vertices - start).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+void TestRefusals()
+{
+  Lattice lattice = MakeLattice(2);
+  HexSmoothingResult result;
+  std::vector<std::vector<int>> tooFew(3);
+  PCH_CHECK(
+    !smoothHexMesh(lattice.Mesh, tooFew, lattice.Surface, HexSmoothingParameters(), result));
+}
+} // namespace
+
+int main(int, char*[])
+{
+  TestDirections();
+  TestPolishLiftsTheWorstHexes();
+  TestPerfectLatticeStays();
+  TestRefusals();
+  return PCH_TEST_RESULT();
+}
