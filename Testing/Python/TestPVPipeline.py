@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The whole pipeline in pvpython through the plugin, uniform guidance: a surface to tets, cuts,
 frame field, polycube, hexes; then FrameField guidance, and its refusal without a frame field;
-then the closed form on the torus (cut mesh, no corner) and Hex Extract's refusal of it. Asserts
+then the closed form on the torus (cut mesh, no corner), its hexes with the polish of the worst
+hexes on and off, and Hex Extract's refusal of it. Asserts
 what matters: beta_1 cuts, a polycube without inverted tets, and a valid hex mesh near the
 requested count with every scaled Jacobian positive."""
 import os
@@ -111,5 +112,19 @@ assert field(closedHexes, "InvertedHexCount") == 0
 assert field(closedHexes, "IrregularBoundaryVertexCount") == 0
 assert field(closedHexes, "DistanceHausdorff") < 40.0
 assert all(float(c).is_integer() for c in shift.GetTuple3(0))
+# The polish of the worst hexes (on by default) lifts the minimum the sweeps left, and is off
+# when the property says so.
+assert closedHexes.Polish == 1
+unpolished = HexExtract(Input=closed, TargetHexCount=2000, Polish=0)  # noqa: F821
+unpolished.UpdatePipeline()
+print("torus, closed-form hexes: SJ min before / after the polish %.4f / %.4f, without it %.4f" % (
+    field(closedHexes, "ScaledJacobianMinBeforePolish"), field(closedHexes, "ScaledJacobianMin"),
+    field(unpolished, "ScaledJacobianMin")))
+# (ScaledJacobianMin is Verdict's, on the output in the input's units: equal up to rounding.)
+before = field(closedHexes, "ScaledJacobianMinBeforePolish")
+unpolishedMin = field(unpolished, "ScaledJacobianMin")
+assert abs(unpolishedMin - field(unpolished, "ScaledJacobianMinBeforePolish")) < 1e-9
+assert abs(unpolishedMin - before) < 1e-9
+assert field(closedHexes, "ScaledJacobianMin") > before + 1e-4
 print("TestPVPipeline: ok")
 sys.exit(0)
