@@ -66,9 +66,9 @@ struct HexSmoothingResult
   double MeanBefore = 0.0;
   double MinAfter = 0.0;
   double MeanAfter = 0.0;
-  int Sweeps = 0;          ///< sweeps run, those between the polishes included
+  int Sweeps = 0;               ///< sweeps run, those between the polishes included
   double MinBeforePolish = 0.0; ///< minimum scaled Jacobian after the first sweeps
-  int PolishPasses = 0;    ///< polish passes run, both polishes
+  int PolishPasses = 0;         ///< polish passes run, both polishes
 };
 
 /// Smooths `mesh` in place.

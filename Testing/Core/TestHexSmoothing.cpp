@@ -88,15 +88,14 @@ void TestPolishLiftsTheWorstHexes()
   without.PolishPasses = 0;
   HexSmoothingResult plainResult;
   HexSmoothingResult polishedResult;
+  PCH_CHECK(smoothHexMesh(plain.Mesh, plain.VertexCharts, plain.Surface, without, plainResult));
   PCH_CHECK(
-    smoothHexMesh(plain.Mesh, plain.VertexCharts, plain.Surface, without, plainResult));
-  PCH_CHECK(smoothHexMesh(
-    polished.Mesh, polished.VertexCharts, polished.Surface, params, polishedResult));
+    smoothHexMesh(polished.Mesh, polished.VertexCharts, polished.Surface, params, polishedResult));
   const Eigen::VectorXd quality = ComputeHexScaledJacobians(polished.Mesh);
-  std::cout << "jiggled lattice: SJ min " << jiggled << ", after 2 sweeps "
-            << plainResult.MinAfter << ", polished " << polishedResult.MinAfter << " in "
-            << polishedResult.PolishPasses << " passes; mean " << plainResult.MeanAfter << " / "
-            << polishedResult.MeanAfter << std::endl;
+  std::cout << "jiggled lattice: SJ min " << jiggled << ", after 2 sweeps " << plainResult.MinAfter
+            << ", polished " << polishedResult.MinAfter << " in " << polishedResult.PolishPasses
+            << " passes; mean " << plainResult.MeanAfter << " / " << polishedResult.MeanAfter
+            << std::endl;
 
   PCH_CHECK(plainResult.PolishPasses == 0);
   PCH_CHECK(plainResult.MinAfter >= jiggled);
@@ -127,11 +126,8 @@ void TestPerfectLatticeStays()
   Lattice lattice = MakeLattice(4);
   const Points start = lattice.Mesh.Vertices;
   HexSmoothingResult result;
-  PCH_CHECK(smoothHexMesh(lattice.Mesh,
-    lattice.VertexCharts,
-    lattice.Surface,
-    HexSmoothingParameters(),
-    result));
+  PCH_CHECK(smoothHexMesh(
+    lattice.Mesh, lattice.VertexCharts, lattice.Surface, HexSmoothingParameters(), result));
   PCH_CHECK_NEAR(result.MinAfter, 1.0, 1e-12);
   PCH_CHECK((lattice.Mesh.Vertices - start).cwiseAbs().maxCoeff() < 1e-12);
 }
