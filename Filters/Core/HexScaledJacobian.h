@@ -25,6 +25,21 @@ inline constexpr int HexCornerNeighbours[8][3] = { { 1, 3, 4 },
   { 5, 7, 2 },
   { 6, 4, 3 } };
 
+/// The 12 edges of a hex as pairs of corners in VTK's node order: the bottom face's four, the
+/// top face's four, then the four joining them.
+inline constexpr int HexEdges[12][2] = { { 0, 1 },
+  { 1, 2 },
+  { 2, 3 },
+  { 3, 0 },
+  { 4, 5 },
+  { 5, 6 },
+  { 6, 7 },
+  { 7, 4 },
+  { 0, 4 },
+  { 1, 5 },
+  { 2, 6 },
+  { 3, 7 } };
+
 /// The nine values whose minimum is the scaled Jacobian: the normalised Jacobian determinant at
 /// each corner (VTK's node order) and, last, at the centre.
 std::array<double, 9> HexCornerScaledJacobians(const Eigen::Matrix<double, 8, 3>& corners);

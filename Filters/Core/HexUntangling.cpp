@@ -468,18 +468,6 @@ Status untangleHexMesh(HexMesh& mesh,
 
   // Each hex's Jacobians are measured against a cube of its own mean edge length, which an
   // inverted hex still has.
-  constexpr int HexEdges[12][2] = { { 0, 1 },
-    { 1, 2 },
-    { 2, 3 },
-    { 3, 0 },
-    { 4, 5 },
-    { 5, 6 },
-    { 6, 7 },
-    { 7, 4 },
-    { 0, 4 },
-    { 1, 5 },
-    { 2, 6 },
-    { 3, 7 } };
   std::vector<double> inverseSize(static_cast<size_t>(hexCount));
   for (int h = 0; h < hexCount; ++h)
   {

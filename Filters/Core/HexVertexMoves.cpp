@@ -11,19 +11,6 @@ namespace polycubehex
 {
 namespace
 {
-constexpr int HexEdges[12][2] = { { 0, 1 },
-  { 1, 2 },
-  { 2, 3 },
-  { 3, 0 },
-  { 4, 5 },
-  { 5, 6 },
-  { 6, 7 },
-  { 7, 4 },
-  { 0, 4 },
-  { 1, 5 },
-  { 2, 6 },
-  { 3, 7 } };
-
 bool Contains(const std::vector<int>& sorted, int value)
 {
   return std::binary_search(sorted.begin(), sorted.end(), value);
