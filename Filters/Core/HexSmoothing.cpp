@@ -317,13 +317,23 @@ bool ClimbTogether(HexVertexMoves& moves,
 
 /// The polish: passes over the movable vertices of the hexes within PolishBand of the minimum,
 /// each vertex climbing alone, then all of them together, until a pass lifts the minimum by
-/// less than 1e-5. The minimum never decreases.
-void Polish(HexVertexMoves& moves, const HexSmoothingParameters& params, HexSmoothingResult& result)
+/// less than 1e-5. The minimum never decreases. Returns false when the caller aborted (checked
+/// before each pass; the passes done so far are kept).
+bool Polish(HexVertexMoves& moves,
+  const HexSmoothingParameters& params,
+  HexSmoothingResult& result,
+  const std::function<bool(double)>& report)
 {
   const HexMesh& mesh = moves.Mesh();
   const int hexCount = static_cast<int>(mesh.Cells.rows());
+  bool aborted = false;
   for (int pass = 0; pass < params.PolishPasses; ++pass)
   {
+    if (!report(static_cast<double>(pass) / params.PolishPasses))
+    {
+      aborted = true;
+      break;
+    }
     const Eigen::VectorXd& quality = moves.Quality();
     const double lowest = quality.minCoeff();
     std::vector<int> worst;
@@ -361,6 +371,7 @@ void Polish(HexVertexMoves& moves, const HexSmoothingParameters& params, HexSmoo
   }
   result.MinAfter = moves.Quality().minCoeff();
   result.MeanAfter = moves.Quality().mean();
+  return !aborted && report(1.0);
 }
 } // namespace
 
@@ -409,10 +420,13 @@ Status smoothHexMesh(HexMesh& mesh,
   }
 
   // Sweeps; the polish of the worst hexes; a few sweeps, which take back for the mean what the
-  // polish's moves cost it, the new minimum as their floor; the polish once more.
+  // polish's moves cost it, the new minimum as their floor; the polish once more. On the progress
+  // bar each polish counts as PolishProgressShare sweeps (about its share of the time).
   const bool polish = params.PolishPasses > 0;
   const int sweepsAfter = polish ? std::max(0, params.SweepsAfterPolish) : 0;
-  const double total = static_cast<double>(params.Iterations + sweepsAfter);
+  constexpr double PolishProgressShare = 3.0;
+  const double polishShare = polish ? PolishProgressShare : 0.0;
+  const double total = params.Iterations + sweepsAfter + 2.0 * polishShare;
   auto stage = [&](double begin, double length)
   {
     return [&progress, begin, length, total](double p)
@@ -425,12 +439,13 @@ Status smoothHexMesh(HexMesh& mesh,
   result.MinBeforePolish = result.MinAfter;
   if (polish)
   {
-    Polish(moves, params, result);
-    if (!RunSweeps(moves, sweepsAfter, params, result, stage(params.Iterations, sweepsAfter)))
+    const double afterFirst = params.Iterations + polishShare;
+    if (!Polish(moves, params, result, stage(params.Iterations, polishShare)) ||
+      !RunSweeps(moves, sweepsAfter, params, result, stage(afterFirst, sweepsAfter)) ||
+      !Polish(moves, params, result, stage(afterFirst + sweepsAfter, polishShare)))
     {
       return Status::Failure("hex smoothing aborted");
     }
-    Polish(moves, params, result);
   }
   ReportProgress(progress, 1.0);
   return Status::Success();

@@ -11,9 +11,11 @@
 #include "TestAssert.h"
 #include "TestHexLattice.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace polycubehex;
@@ -121,6 +123,60 @@ void TestPolishLiftsTheWorstHexes()
   }
 }
 
+// The progress bar runs through the polish to 1, in order; an abort asked for during the polish
+// stops it: the call fails, and the mesh keeps what was done (no hex worse than before).
+void TestPolishProgressAndAbort()
+{
+  Lattice lattice = MakeLattice(6);
+  Jiggle(lattice, 0.4, 3);
+  HexSmoothingParameters params;
+  params.Iterations = 2;
+  params.SoftFeatureAngle = 0.0;
+  params.SweepsAfterPolish = 0; // so that nothing but the polish runs after the sweeps
+  std::vector<double> fractions;
+  HexSmoothingResult result;
+  Lattice reported = lattice;
+  PCH_CHECK(smoothHexMesh(reported.Mesh,
+    reported.VertexCharts,
+    reported.Surface,
+    params,
+    result,
+    [&fractions](double f)
+    {
+      fractions.push_back(f);
+      return true;
+    }));
+  PCH_CHECK(std::is_sorted(fractions.begin(), fractions.end()));
+  PCH_CHECK(!fractions.empty() && fractions.back() == 1.0);
+  // The sweeps end at 2 / (2 + 2 * 3) of the bar (each polish counts as 3 sweeps); the two
+  // polishes report past it.
+  const double sweepsEnd = 2.0 / 8.0;
+  PCH_CHECK(std::count_if(fractions.begin(),
+              fractions.end(),
+              [sweepsEnd](double f) { return f > sweepsEnd + 1e-12 && f < 1.0; }) >= 2);
+
+  const double before = ComputeHexScaledJacobians(lattice.Mesh).minCoeff();
+  bool askedDuringPolish = false;
+  const Status aborted = smoothHexMesh(lattice.Mesh,
+    lattice.VertexCharts,
+    lattice.Surface,
+    params,
+    result,
+    [&askedDuringPolish, sweepsEnd](double f)
+    {
+      if (f > sweepsEnd + 1e-12)
+      {
+        askedDuringPolish = true;
+        return false;
+      }
+      return true;
+    });
+  PCH_CHECK(!aborted);
+  PCH_CHECK(askedDuringPolish);
+  PCH_CHECK(aborted.Message().find("aborted") != std::string::npos);
+  PCH_CHECK(ComputeHexScaledJacobians(lattice.Mesh).minCoeff() >= before);
+}
+
 void TestPerfectLatticeStays()
 {
   Lattice lattice = MakeLattice(4);
@@ -146,6 +202,7 @@ int main(int, char*[])
 {
   TestDirections();
   TestPolishLiftsTheWorstHexes();
+  TestPolishProgressAndAbort();
   TestPerfectLatticeStays();
   TestRefusals();
   return PCH_TEST_RESULT();
