@@ -214,6 +214,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.RoundingCandidates = this->RoundingCandidates;
   params.SoftFeatureAngle = this->SoftFeatureAngle;
   params.Polish = this->Polish;
+  params.PolishReleaseAngle = this->PolishReleaseAngle;
   auto progress = [this](double fraction)
   {
     this->UpdateProgress(0.8 * fraction);
@@ -298,6 +299,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     fields, "ScaledJacobianMinAfterUntangling", result.ScaledJacobianMinAfterUntangling);
   polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMinBeforePolish", result.ScaledJacobianMinBeforePolish);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "PolishReleasedVertexCount", result.PolishReleasedVertexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(
     fields, "ScaledJacobianMeanAfterUntangling", result.ScaledJacobianMeanAfterUntangling);
   polycubehex::SetFieldValue<vtkIntArray>(
@@ -350,6 +353,7 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RoundingCandidates: " << this->RoundingCandidates << "\n";
   os << indent << "SoftFeatureAngle: " << this->SoftFeatureAngle << "\n";
   os << indent << "Polish: " << (this->Polish ? "On" : "Off") << "\n";
+  os << indent << "PolishReleaseAngle: " << this->PolishReleaseAngle << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";
 }

@@ -124,6 +124,18 @@ public:
   ///@}
 
   ///@{
+  /// With Polish: the corners and curve vertices of the hexes nearest the minimum (within 0.01)
+  /// may leave their place and slide on the surface where the input's normals about them vary
+  /// by at most this many degrees, so that the polish can move them. It acts only where the
+  /// mesh is worst, and at angles above SoftFeatureAngle rounds off polycube corners the input
+  /// has only softly. The default, 40 degrees, keeps the sharp edges and corners of a box
+  /// (their normals are 45 and 54.7 degrees from their mean); 0 keeps every one.
+  /// PolishReleasedVertexCount reports how many left. Default 40, in [0, 90].
+  vtkSetClampMacro(PolishReleaseAngle, double, 0.0, 90.0);
+  vtkGetMacro(PolishReleaseAngle, double);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -162,6 +174,7 @@ protected:
   int RoundingCandidates = 4;
   double SoftFeatureAngle = 20.0; // the core's DefaultSoftFeatureAngle (checked in the .cxx)
   bool Polish = true;
+  double PolishReleaseAngle = 40.0;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;
 

@@ -565,6 +565,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       {
         smoothing.PolishPasses = 0;
       }
+      smoothing.PolishReleaseAngle = params.PolishReleaseAngle;
       HexSmoothingResult smoothed;
       status = smoothHexMesh(mesh,
         projection,
@@ -577,6 +578,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       }
       result.SmoothingSweeps = smoothed.Sweeps;
       result.ScaledJacobianMinBeforePolish = smoothed.MinBeforePolish;
+      result.PolishReleasedVertexCount = smoothed.PolishReleased;
     }
     result.ReleasedBoundaryVertexCount = projection.ReleasedCount();
   }

@@ -74,6 +74,11 @@ struct HexExtractionParameters
   /// minimum of their corners' scaled Jacobians (HexSmoothing.h; default on). The minimum
   /// never decreases.
   bool Polish = true;
+  /// With Polish: corners and curve vertices of the hexes nearest the minimum may leave their
+  /// place where the input's normals about them vary by at most this many degrees
+  /// (HexSmoothingParameters::PolishReleaseAngle; default 40, which keeps a box's sharp edges
+  /// and corners; 0: they all stay).
+  double PolishReleaseAngle = 40.0;
   /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
   /// the surface across its charts where the input's normals about it vary by at most this
   /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).
@@ -155,6 +160,7 @@ struct HexExtractionResult
   int SmoothingSweeps = 0;
   /// Minimum scaled Jacobian after the sweeps, before the polish (the final one without it).
   double ScaledJacobianMinBeforePolish = 0.0;
+  int PolishReleasedVertexCount = 0; ///< corners and curve vertices the polish released
   /// After the untangling, before the local smoothing (equal to the raw values without it).
   double ScaledJacobianMinAfterUntangling = 0.0;
   double ScaledJacobianMeanAfterUntangling = 0.0;

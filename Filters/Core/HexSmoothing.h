@@ -57,6 +57,15 @@ struct HexSmoothingParameters
   int PolishJointSteps = 20;
   /// Sweeps between the two polishes (default 5).
   int SweepsAfterPolish = 5;
+  /// Corners and curve vertices of the hexes within PolishReleaseBand of the minimum are
+  /// released onto the surface before each polish pass where the input's normals about them
+  /// vary by at most this many degrees (HexSurfaceProjection::SmoothAt); the polish can then
+  /// move them; 0 keeps them. Larger than the projection's SoftFeatureAngle, which releases
+  /// such vertices everywhere, it acts only where the mesh is worst. The default, 40 degrees,
+  /// keeps the sharp edges and corners of a box (normals 45 and 54.7 degrees from their mean).
+  double PolishReleaseAngle = 40.0;
+  /// See PolishReleaseAngle (default 0.01).
+  double PolishReleaseBand = 0.01;
 };
 
 /// Quality before and after.
@@ -69,6 +78,7 @@ struct HexSmoothingResult
   int Sweeps = 0;               ///< sweeps run, those between the polishes included
   double MinBeforePolish = 0.0; ///< minimum scaled Jacobian after the first sweeps
   int PolishPasses = 0;         ///< polish passes run, both polishes
+  int PolishReleased = 0;       ///< corners and curve vertices the polish released
 };
 
 /// Smooths `mesh` in place.
@@ -85,8 +95,9 @@ Status smoothHexMesh(HexMesh& mesh,
 
 /// The same with the boundary vertices' kinds and projections given (for instance those the
 /// untangling left, with the vertices it released; params.SoftFeatureAngle is then unused).
+/// The polish may release more (PolishReleaseAngle).
 Status smoothHexMesh(HexMesh& mesh,
-  const HexSurfaceProjection& projection,
+  HexSurfaceProjection& projection,
   const HexSmoothingParameters& params,
   HexSmoothingResult& result,
   const Progress& progress = {});

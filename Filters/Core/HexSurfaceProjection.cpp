@@ -380,6 +380,13 @@ int HexSurfaceProjection::Region(int chart) const
   return chart;
 }
 
+bool HexSurfaceProjection::SmoothAt(int v, const Eigen::Vector3d& p, double angle) const
+{
+  return this->Grid && angle > 0.0 &&
+    this->Smooth(
+      p, this->Charts(v), this->CellSize, std::cos(angle * 3.14159265358979323846 / 180.0));
+}
+
 bool HexSurfaceProjection::Release(int v, const Eigen::Vector3d& p)
 {
   HexVertexKind& kind = this->VertexKinds[static_cast<size_t>(v)];

@@ -107,6 +107,9 @@ public:
   /// now on; one that knows no chart onto the whole surface). False when v is not such a vertex
   /// or one of its charts is not in the surface.
   bool Release(int v, const Eigen::Vector3d& p);
+  /// Whether the input's normals within one hex edge of p, over v's charts, differ by at most
+  /// `angle` degrees from their mean (the test that releases soft vertices at construction).
+  bool SmoothAt(int v, const Eigen::Vector3d& p, double angle) const;
 
   /// The closest point to p where vertex v may be (p itself for interior and fixed vertices).
   /// @param direction  if set, receives the unit normal of the closest triangle (Surface) or the

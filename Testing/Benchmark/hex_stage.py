@@ -68,6 +68,7 @@ def main():
     parser.add_argument("--map-smoothing", action="store_true")
     parser.add_argument("--soft-feature-angle", type=float, default=None)
     parser.add_argument("--no-polish", action="store_true")
+    parser.add_argument("--polish-release-angle", type=float, default=None)
     parser.add_argument("--normal-difference-weight", type=float, default=None,
                         help="the deformation's NormalDifferenceWeight (cached apart)")
     parser.add_argument("--cache", default="/tmp/polycubehex-polycubes")
@@ -83,6 +84,8 @@ def main():
     extract.SetPaddingPlacement(0 if args.no_padding_placement else 1)
     extract.SetMapSmoothing(1 if args.map_smoothing else 0)
     extract.SetPolish(0 if args.no_polish else 1)
+    if args.polish_release_angle is not None:
+        extract.SetPolishReleaseAngle(args.polish_release_angle)
     if args.soft_feature_angle is not None:
         extract.SetSoftFeatureAngle(args.soft_feature_angle)
     start = time.perf_counter()

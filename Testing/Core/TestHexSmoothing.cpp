@@ -133,6 +133,7 @@ void TestPolishProgressAndAbort()
   params.Iterations = 2;
   params.SoftFeatureAngle = 0.0;
   params.SweepsAfterPolish = 0; // so that nothing but the polish runs after the sweeps
+  params.PolishReleaseAngle = 0.0; // one round of two polishes
   std::vector<double> fractions;
   HexSmoothingResult result;
   Lattice reported = lattice;
@@ -177,6 +178,81 @@ void TestPolishProgressAndAbort()
   PCH_CHECK(ComputeHexScaledJacobians(lattice.Mesh).minCoeff() >= before);
 }
 
+// A lattice whose top face (z = 1) is three charts meeting at its centre: there the vertex is a
+// polycube corner on a flat part of the surface. Pushed sideways (still on the face), it makes
+// the worst hexes, and only a polish allowed to release it can move it back.
+void TestPolishReleasesSoftCorners()
+{
+  const int n = 4;
+  Lattice lattice = MakeLattice(n);
+  for (int f = 0; f < lattice.Surface.Faces.rows(); ++f)
+  {
+    if (lattice.Surface.FaceChart[static_cast<size_t>(f)] != 5)
+    {
+      continue;
+    }
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+      centre += lattice.Surface.Vertices.row(lattice.Surface.Faces(f, k)).transpose() / 3.0;
+    }
+    lattice.Surface.FaceChart[static_cast<size_t>(f)] =
+      centre.x() < 0.5 ? 5 : (centre.y() < 0.5 ? 6 : 7);
+  }
+  for (int v = 0; v < lattice.Mesh.Vertices.rows(); ++v)
+  {
+    auto& charts = lattice.VertexCharts[static_cast<size_t>(v)];
+    charts.erase(std::remove(charts.begin(), charts.end(), 5), charts.end());
+  }
+  for (int f = 0; f < lattice.Surface.Faces.rows(); ++f)
+  {
+    const int chart = lattice.Surface.FaceChart[static_cast<size_t>(f)];
+    for (int k = 0; k < 3 && chart >= 5; ++k)
+    {
+      auto& charts = lattice.VertexCharts[static_cast<size_t>(lattice.Surface.Faces(f, k))];
+      if (std::find(charts.begin(), charts.end(), chart) == charts.end())
+      {
+        charts.push_back(chart);
+        std::sort(charts.begin(), charts.end());
+      }
+    }
+  }
+  const int centre = lattice.Id(n / 2, n / 2, n);
+  PCH_CHECK(lattice.VertexCharts[static_cast<size_t>(centre)] == std::vector<int>({ 5, 6, 7 }));
+  lattice.Mesh.Vertices(centre, 0) += 0.45 / n;
+
+  HexSmoothingParameters params;
+  params.SoftFeatureAngle = 0.0; // no vertex released before the polish
+  params.PolishReleaseAngle = 0.0;
+  HexSmoothingParameters releasing = params;
+  releasing.PolishReleaseAngle = 40.0;
+  Lattice held = lattice;
+  Lattice released = lattice;
+  HexSmoothingResult heldResult;
+  HexSmoothingResult releasedResult;
+  PCH_CHECK(smoothHexMesh(held.Mesh, held.VertexCharts, held.Surface, params, heldResult));
+  PCH_CHECK(smoothHexMesh(
+    released.Mesh, released.VertexCharts, released.Surface, releasing, releasedResult));
+  std::cout << "soft corner pushed aside: SJ min held " << heldResult.MinAfter << ", released "
+            << releasedResult.MinAfter << " (" << releasedResult.PolishReleased
+            << " vertices released)" << std::endl;
+  PCH_CHECK(heldResult.PolishReleased == 0);
+  PCH_CHECK(held.Mesh.Vertices.row(centre) == lattice.Mesh.Vertices.row(centre));
+  PCH_CHECK(releasedResult.PolishReleased >= 1);
+  PCH_CHECK(releasedResult.MinAfter >= heldResult.MinAfter); // the release comes last
+  PCH_CHECK(releasedResult.MinAfter > heldResult.MinAfter + 0.05);
+  PCH_CHECK(std::fabs(released.Mesh.Vertices(centre, 0) - 0.5) < 0.45 / n / 2);
+  PCH_CHECK(std::fabs(released.Mesh.Vertices(centre, 2) - 1.0) < 1e-9); // still on the face
+
+  // The angle: a flat corner is smooth at any angle; a cube corner (normals 54.7 degrees from
+  // their mean) only above that, so that 40 degrees keeps it.
+  HexSurfaceProjection projection(released.Surface, released.VertexCharts, released.Mesh, 0.0);
+  const Eigen::Vector3d corner = released.Mesh.Vertices.row(released.Id(n, n, n)).transpose();
+  PCH_CHECK(!projection.SmoothAt(released.Id(n, n, n), corner, 40.0));
+  PCH_CHECK(projection.SmoothAt(released.Id(n, n, n), corner, 60.0));
+  PCH_CHECK(projection.SmoothAt(centre, released.Mesh.Vertices.row(centre).transpose(), 1.0));
+}
+
 void TestPerfectLatticeStays()
 {
   Lattice lattice = MakeLattice(4);
@@ -203,6 +279,7 @@ int main(int, char*[])
   TestDirections();
   TestPolishLiftsTheWorstHexes();
   TestPolishProgressAndAbort();
+  TestPolishReleasesSoftCorners();
   TestPerfectLatticeStays();
   TestRefusals();
   return PCH_TEST_RESULT();
