@@ -315,6 +315,38 @@ bool ClimbTogether(HexVertexMoves& moves,
   return false;
 }
 
+/// Releases onto the surface the corners and curve vertices of the hexes within
+/// PolishReleaseBand of `lowest` where the input is smooth within PolishReleaseAngle about them;
+/// returns how many.
+int ReleaseSoftCorners(HexVertexMoves& moves,
+  HexSurfaceProjection& projection,
+  double lowest,
+  const HexSmoothingParameters& params)
+{
+  const HexMesh& mesh = moves.Mesh();
+  const Eigen::VectorXd& quality = moves.Quality();
+  int released = 0;
+  for (int h = 0; h < static_cast<int>(mesh.Cells.rows()); ++h)
+  {
+    if (quality[h] >= lowest + params.PolishReleaseBand)
+    {
+      continue;
+    }
+    for (int k = 0; k < 8; ++k)
+    {
+      const int v = mesh.Cells(h, k);
+      const HexVertexKind kind = moves.Kind(v);
+      const Eigen::Vector3d p = mesh.Vertices.row(v).transpose();
+      if ((kind == HexVertexKind::Fixed || kind == HexVertexKind::Feature) &&
+        projection.SmoothAt(v, p, params.PolishReleaseAngle) && projection.Release(v, p))
+      {
+        ++released;
+      }
+    }
+  }
+  return released;
+}
+
 /// The polish: passes over the movable vertices of the hexes within PolishBand of the minimum,
 /// each vertex climbing alone, then all of them together, until a pass lifts the minimum by
 /// less than 1e-5. The minimum never decreases. Returns false when the caller aborted (checked
@@ -339,20 +371,7 @@ bool Polish(HexVertexMoves& moves,
     const double lowest = quality.minCoeff();
     if (releaseOnto)
     {
-      for (int h = 0; h < hexCount; ++h)
-      {
-        for (int k = 0; k < 8 && quality[h] < lowest + params.PolishReleaseBand; ++k)
-        {
-          const int v = mesh.Cells(h, k);
-          const HexVertexKind kind = moves.Kind(v);
-          const Eigen::Vector3d p = mesh.Vertices.row(v).transpose();
-          if ((kind == HexVertexKind::Fixed || kind == HexVertexKind::Feature) &&
-            releaseOnto->SmoothAt(v, p, params.PolishReleaseAngle) && releaseOnto->Release(v, p))
-          {
-            ++result.PolishReleased;
-          }
-        }
-      }
+      result.PolishReleased += ReleaseSoftCorners(moves, *releaseOnto, lowest, params);
     }
     std::vector<int> worst;
     for (int h = 0; h < hexCount; ++h)

@@ -77,7 +77,7 @@ struct HexSmoothingResult
   double MeanAfter = 0.0;
   int Sweeps = 0;               ///< sweeps run, those between the polishes included
   double MinBeforePolish = 0.0; ///< minimum scaled Jacobian after the first sweeps
-  int PolishPasses = 0;         ///< polish passes run, both polishes
+  int PolishPasses = 0;         ///< polish passes run, every polish
   int PolishReleased = 0;       ///< corners and curve vertices the polish released
 };
 
