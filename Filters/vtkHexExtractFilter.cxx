@@ -215,6 +215,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.SoftFeatureAngle = this->SoftFeatureAngle;
   params.Polish = this->Polish;
   params.PolishReleaseAngle = this->PolishReleaseAngle;
+  params.MeanSearchSweeps = this->MeanSearchSweeps;
   auto progress = [this](double fraction)
   {
     this->UpdateProgress(0.8 * fraction);
@@ -354,6 +355,7 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SoftFeatureAngle: " << this->SoftFeatureAngle << "\n";
   os << indent << "Polish: " << (this->Polish ? "On" : "Off") << "\n";
   os << indent << "PolishReleaseAngle: " << this->PolishReleaseAngle << "\n";
+  os << indent << "MeanSearchSweeps: " << this->MeanSearchSweeps << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";
 }

@@ -136,6 +136,18 @@ public:
   ///@}
 
   ///@{
+  /// With Smoothing: sweeps after the Laplacian ones (and in those between the polishes) in
+  /// which every vertex, after its Laplacian step, also tries a short step (0.05 of its mean
+  /// edge length) each way along each direction it may move in, kept when it raises the mean
+  /// scaled Jacobian of its hexes without going below the mesh's minimum. The Laplacian aims at
+  /// evenly spaced vertices rather than square hexes; three such sweeps raised the mean by about
+  /// 0.01 on the benchmark models, for about 2 more seconds per 17k hexes. 0 turns the steps
+  /// off. Default 3, in [0, 50].
+  vtkSetClampMacro(MeanSearchSweeps, int, 0, 50);
+  vtkGetMacro(MeanSearchSweeps, int);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -175,6 +187,7 @@ protected:
   double SoftFeatureAngle = 20.0; // the core's DefaultSoftFeatureAngle (checked in the .cxx)
   bool Polish = true;
   double PolishReleaseAngle = 40.0;
+  int MeanSearchSweeps = 3;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;
 

@@ -566,6 +566,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         smoothing.PolishPasses = 0;
       }
       smoothing.PolishReleaseAngle = params.PolishReleaseAngle;
+      smoothing.MeanSearchSweeps = params.MeanSearchSweeps;
       HexSmoothingResult smoothed;
       status = smoothHexMesh(mesh,
         projection,

@@ -79,6 +79,10 @@ struct HexExtractionParameters
   /// (HexSmoothingParameters::PolishReleaseAngle; default 40, which keeps a box's sharp edges
   /// and corners; 0: they all stay).
   double PolishReleaseAngle = 40.0;
+  /// With Smoothing: sweeps in which each vertex also takes steps that raise the mean scaled
+  /// Jacobian of its hexes (HexSmoothingParameters::MeanSearchSweeps; default 3; 0 turns them
+  /// off).
+  int MeanSearchSweeps = 3;
   /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
   /// the surface across its charts where the input's normals about it vary by at most this
   /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Quality-guarded smoothing of an extracted hex mesh (not in the paper; the paper's meshes are
 // the raw extraction). Each vertex moves towards the mean of its neighbours (Laplacian) when that
-// raises the mean scaled Jacobian of its hexes without going below the mesh's minimum; then,
-// around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes;
+// raises the mean scaled Jacobian of its hexes without going below the mesh's minimum; a few more
+// sweeps also take short steps along each vertex's directions that raise that mean further;
+// then, around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes;
 // last, a polish lifts the worst hexes by gradient steps on a soft minimum of their corners.
 // The mesh's minimum scaled Jacobian never decreases. Boundary vertices stay
 // on the input surface: a vertex on one chart slides on that chart's triangles, a vertex on two
@@ -27,6 +28,17 @@ struct HexSmoothingParameters
   /// Smoothing stops after a sweep that raises neither the minimum nor the mean scaled
   /// Jacobian by this much (default 1e-5).
   double Tolerance = 1e-5;
+  /// Sweeps after the Laplacian ones (and in those between the polishes) in which every vertex,
+  /// after its Laplacian step, also tries a step each way along each of its directions, kept
+  /// when it raises the mean scaled Jacobian of its hexes under the Laplacian's rule. The
+  /// Laplacian aims at evenly spaced vertices, not at square hexes: on the closed-form
+  /// polycubes at the paper's counts three such sweeps raised the mean by about 0.01
+  /// (rockerarm 0.927 -> 0.940) for about 2 more seconds per 17k hexes. Default 3; 0 turns the
+  /// steps off everywhere.
+  int MeanSearchSweeps = 3;
+  /// Length of those steps, a fraction of the vertex's mean edge length (default 0.05; 0 turns
+  /// them off).
+  double MeanSearchStep = 0.05;
   /// Vertices whose worst hex is within this of the mesh's minimum scaled Jacobian also get a
   /// pattern search that maximises it (default 0.1, >= 0; a negative value turns it off).
   double WorstBand = 0.1;
@@ -75,7 +87,7 @@ struct HexSmoothingResult
   double MeanBefore = 0.0;
   double MinAfter = 0.0;
   double MeanAfter = 0.0;
-  int Sweeps = 0;               ///< sweeps run, those between the polishes included
+  int Sweeps = 0;               ///< sweeps run, those for the mean and between the polishes included
   double MinBeforePolish = 0.0; ///< minimum scaled Jacobian after the first sweeps
   int PolishPasses = 0;         ///< polish passes run, every polish
   int PolishReleased = 0;       ///< corners and curve vertices the polish released

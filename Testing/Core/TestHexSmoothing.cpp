@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // smoothHexMesh on a cube lattice whose charts are the cube's six faces: the directions each
-// kind of vertex may move in; a jiggled lattice whose minimum scaled Jacobian the sweeps leave
+// kind of vertex may move in; the steps for the mean raise the mean of a jiggled lattice beyond
+// the Laplacian's without lowering its minimum; a jiggled lattice whose minimum scaled Jacobian the sweeps leave
 // low is lifted further by the polish of the worst hexes, which never lowers it, keeps the
 // boundary on the cube and the corners in place; a perfect lattice stays perfect.
 #include "HexScaledJacobian.h"
@@ -72,6 +73,57 @@ void Jiggle(Lattice& lattice, double amount, unsigned seed)
   }
 }
 
+/// A lattice whose top face bulges (z scaled by 1 + 0.5 sin(pi x) sin(pi y)): the Laplacian's
+/// resting place (evenly spaced vertices) is not where the mean scaled Jacobian is highest.
+/// After the Laplacian sweeps have converged, the sweeps with the steps for the mean
+/// (MeanSearchSweeps) raise the mean further without lowering the minimum, and keep the five
+/// flat faces' vertices on their planes.
+void TestMeanSearchRaisesTheMean()
+{
+  Lattice laplacian = MakeLattice(6);
+  for (int v = 0; v < laplacian.Mesh.Vertices.rows(); ++v)
+  {
+    const double x = laplacian.Mesh.Vertices(v, 0);
+    const double y = laplacian.Mesh.Vertices(v, 1);
+    laplacian.Mesh.Vertices(v, 2) *= 1.0 + 0.5 * std::sin(M_PI * x) * std::sin(M_PI * y);
+  }
+  laplacian.Surface.Vertices = laplacian.Mesh.Vertices;
+  Lattice searched = laplacian;
+  HexSmoothingParameters params;
+  params.SoftFeatureAngle = 0.0;
+  params.PolishPasses = 0;
+  HexSmoothingParameters without = params;
+  without.MeanSearchSweeps = 0;
+  HexSmoothingResult laplacianResult;
+  HexSmoothingResult searchedResult;
+  PCH_CHECK(smoothHexMesh(
+    laplacian.Mesh, laplacian.VertexCharts, laplacian.Surface, without, laplacianResult));
+  PCH_CHECK(
+    smoothHexMesh(searched.Mesh, searched.VertexCharts, searched.Surface, params, searchedResult));
+  std::cout << "bulged lattice: SJ mean " << laplacianResult.MeanBefore << " -> Laplacian "
+            << laplacianResult.MeanAfter << " in " << laplacianResult.Sweeps
+            << " sweeps, then the steps for the mean " << searchedResult.MeanAfter << " in "
+            << searchedResult.Sweeps - laplacianResult.Sweeps << " more; min "
+            << laplacianResult.MinAfter << " / " << searchedResult.MinAfter << std::endl;
+  PCH_CHECK(laplacianResult.Sweeps < without.Iterations); // the Laplacian had converged
+  PCH_CHECK(searchedResult.MeanAfter > laplacianResult.MeanAfter + 1e-3);
+  PCH_CHECK(searchedResult.MinAfter >= laplacianResult.MinAfter);
+  PCH_CHECK_NEAR(searchedResult.MeanAfter, ComputeHexScaledJacobians(searched.Mesh).mean(), 1e-12);
+  double error = 0.0;
+  for (int v = 0; v < searched.Mesh.Vertices.rows(); ++v)
+  {
+    for (int chart : searched.VertexCharts[static_cast<size_t>(v)])
+    {
+      if (chart != 5) // the bulged top
+      {
+        const double plane = chart % 2 == 0 ? 0.0 : 1.0;
+        error = std::max(error, std::fabs(searched.Mesh.Vertices(v, chart / 2) - plane));
+      }
+    }
+  }
+  PCH_CHECK(error < 1e-9);
+}
+
 void TestPolishLiftsTheWorstHexes()
 {
   const int n = 6;
@@ -86,6 +138,7 @@ void TestPolishLiftsTheWorstHexes()
   params.Iterations = 2;
   params.SoftFeatureAngle = 0.0;
   params.SweepsAfterPolish = 0; // so that only the polish differs
+  params.MeanSearchSweeps = 0;
   HexSmoothingParameters without = params;
   without.PolishPasses = 0;
   HexSmoothingResult plainResult;
@@ -133,6 +186,7 @@ void TestPolishProgressAndAbort()
   params.Iterations = 2;
   params.SoftFeatureAngle = 0.0;
   params.SweepsAfterPolish = 0; // so that nothing but the polish runs after the sweeps
+  params.MeanSearchSweeps = 0;
   params.PolishReleaseAngle = 0.0; // one round of two polishes
   std::vector<double> fractions;
   HexSmoothingResult result;
@@ -277,6 +331,7 @@ void TestRefusals()
 int main(int, char*[])
 {
   TestDirections();
+  TestMeanSearchRaisesTheMean();
   TestPolishLiftsTheWorstHexes();
   TestPolishProgressAndAbort();
   TestPolishReleasesSoftCorners();
