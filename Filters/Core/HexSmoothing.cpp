@@ -96,7 +96,7 @@ bool RunSweeps(HexVertexMoves& moves,
       }
 
       // 2. Steps along its directions for the mean, one length, under the same rule.
-      if (meanStep > 0.0)
+      if (meanStep > 0.0 && current.Mean < params.MeanSearchBelow)
       {
         const double step = meanStep * edgeLength;
         for (const Eigen::Vector3d& d : moves.Directions(v))
@@ -474,13 +474,14 @@ Status smoothHexMesh(HexMesh& mesh,
   }
 
   // Laplacian sweeps; sweeps with the steps for the mean (after the Laplacian has converged:
-  // interleaved from the first sweep they took 1.5 s more on rockerarm's closed form for the same
-  // mean, and slowed a jiggled lattice's way back to cubes); the polish of the worst hexes; a few sweeps, which take back for the mean what the
-  // polish's moves cost it, the new minimum as their floor; the polish once more. With
-  // PolishReleaseAngle, the same polish, sweeps, polish again, now releasing corners and curve
-  // vertices of the worst hexes: after the others, so that the minimum ends no lower than
-  // without the release (releasing from the start took other paths, some lower: kitten Uniform
-  // 0.479 -> 0.341). On the progress bar each polish counts as PolishProgressShare sweeps.
+  // interleaved from the first sweep they took 1.5 s more on rockerarm's closed form for the
+  // same mean, and slowed a jiggled lattice's way back to cubes); the polish of the worst hexes;
+  // a few sweeps, which take back for the mean what the polish's moves cost it, the new minimum
+  // as their floor; the polish once more. With PolishReleaseAngle, the same polish, sweeps,
+  // polish again, now releasing corners and curve vertices of the worst hexes: after the
+  // others, so that the minimum ends no lower than without the release (releasing from the
+  // start took other paths, some lower: kitten Uniform 0.479 -> 0.341). On the progress bar
+  // each polish counts as PolishProgressShare sweeps.
   const bool polish = params.PolishPasses > 0;
   const int rounds = polish ? (params.PolishReleaseAngle > 0.0 ? 2 : 1) : 0;
   const int sweepsAfter = polish ? std::max(0, params.SweepsAfterPolish) : 0;

@@ -3,10 +3,10 @@
 // the raw extraction). Each vertex moves towards the mean of its neighbours (Laplacian) when that
 // raises the mean scaled Jacobian of its hexes without going below the mesh's minimum; a few more
 // sweeps also take short steps along each vertex's directions that raise that mean further;
-// then, around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes;
+// around the worst hexes, a pattern search maximises the smallest scaled Jacobian of its hexes;
 // last, a polish lifts the worst hexes by gradient steps on a soft minimum of their corners.
-// The mesh's minimum scaled Jacobian never decreases. Boundary vertices stay
-// on the input surface: a vertex on one chart slides on that chart's triangles, a vertex on two
+// The mesh's minimum scaled Jacobian never decreases. Boundary vertices stay on the input
+// surface: a vertex on one chart slides on that chart's triangles, a vertex on two
 // charts slides along their common feature curve, a vertex on three or more charts is fixed
 // (HexSurfaceProjection.h).
 #pragma once
@@ -39,6 +39,10 @@ struct HexSmoothingParameters
   /// Length of those steps, a fraction of the vertex's mean edge length (default 0.05; 0 turns
   /// them off).
   double MeanSearchStep = 0.05;
+  /// Vertices whose hexes' mean scaled Jacobian is already at least this take no such steps
+  /// (default 0.98): they gain little (rockerarm closed form, mean 0.9399 -> 0.9393) and skipping
+  /// them saves a sixth of the smoothing time (2.6 -> 2.2 s).
+  double MeanSearchBelow = 0.98;
   /// Vertices whose worst hex is within this of the mesh's minimum scaled Jacobian also get a
   /// pattern search that maximises it (default 0.1, >= 0; a negative value turns it off).
   double WorstBand = 0.1;
@@ -87,7 +91,7 @@ struct HexSmoothingResult
   double MeanBefore = 0.0;
   double MinAfter = 0.0;
   double MeanAfter = 0.0;
-  int Sweeps = 0;               ///< sweeps run, those for the mean and between the polishes included
+  int Sweeps = 0;               ///< sweeps run, for the mean and between the polishes included
   double MinBeforePolish = 0.0; ///< minimum scaled Jacobian after the first sweeps
   int PolishPasses = 0;         ///< polish passes run, every polish
   int PolishReleased = 0;       ///< corners and curve vertices the polish released

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // smoothHexMesh on a cube lattice whose charts are the cube's six faces: the directions each
-// kind of vertex may move in; the steps for the mean raise the mean of a jiggled lattice beyond
-// the Laplacian's without lowering its minimum; a jiggled lattice whose minimum scaled Jacobian the sweeps leave
-// low is lifted further by the polish of the worst hexes, which never lowers it, keeps the
-// boundary on the cube and the corners in place; a perfect lattice stays perfect.
+// kind of vertex may move in; on a lattice with a bulged top the sweeps for the mean raise the
+// mean beyond the converged Laplacian's without lowering the minimum; a jiggled lattice whose
+// minimum scaled Jacobian the sweeps leave low is lifted further by the polish of the worst
+// hexes, which never lowers it, keeps the boundary on the cube and the corners in place; a
+// perfect lattice stays perfect.
 #include "HexScaledJacobian.h"
 #include "HexSmoothing.h"
 #include "HexSurfaceProjection.h"
