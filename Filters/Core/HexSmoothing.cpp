@@ -499,7 +499,7 @@ Status smoothHexMesh(HexMesh& mesh,
   if (!RunSweeps(moves, params.Iterations, 0.0, params, result, stage(0.0, params.Iterations)) ||
     !RunSweeps(moves,
       meanSweeps,
-      params.MeanSearchStep,
+      meanStep,
       params,
       result,
       stage(params.Iterations, meanSweeps)))

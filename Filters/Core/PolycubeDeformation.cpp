@@ -1247,6 +1247,7 @@ Status ComputePolycube(const TetMesh& input,
           }
         }
         PolycubeNewtonSolver solver(energy, reduction);
+        out.FlattenHalvings = 0;
         double anchorWeight = 1e3 * std::max(1.0, finalBarrier);
         for (int round = 0; round < params.FlattenRounds; ++round, anchorWeight *= 10.0)
         {
@@ -1264,6 +1265,8 @@ Status ComputePolycube(const TetMesh& input,
             return Status::Failure("ComputePolycube: " + status.Message());
           }
           out.Iterations += stats.Iterations;
+          out.FlattenHalvings += stats.InfeasibleTrials;
+          out.FlattenDeviation = stats.Terms.MaxAnchorDeviation;
           for (size_t f = 0; f < folded.size(); ++f)
           {
             if (folded[f] >= 0 && energy.FaceOrientation(x.data(), static_cast<int>(f), folded[f]) > 0.0)

@@ -185,6 +185,13 @@ struct PolycubeResult
   /// Vertices left off their chart planes because snapping them would invert a tet or fold a
   /// chart face (a labelling the connectivity cannot realise); 0 means every chart is exact.
   int UnflattenedVertexCount = 0;
+  /// How the penalised flattening of the last labelling ended, before the snap: the largest
+  /// distance of an anchored coordinate to its plane (a fraction of the diagonal; the penalty
+  /// alone reaches about 1e-8 where the labels can be flattened), and the line-search halvings
+  /// that kept every tet positive, over all its Newton iterations. Many halvings with a large
+  /// deviation mean the flattening stalled, not that it converged onto bad labels.
+  double FlattenDeviation = 0.0;
+  int FlattenHalvings = 0;
   /// Largest turn-back of a crease (PolycubeCreases.h: how far the mesh path of a polycube edge
   /// runs back along the edge's axis, folding the faces between its turning points), in input
   /// units: in the shape the charts were labelled on, and in the result. 0 for monotone creases.

@@ -213,6 +213,10 @@ int main(int argc, char* argv[])
     result.MaxPlaneDeviation,
     result.FoldedFaceCount,
     result.InitiallyFoldedFaceCount);
+  std::printf("penalised flattening: anchor deviation %.3g of the diagonal before the snap, %d "
+              "line-search halvings\n",
+    result.FlattenDeviation,
+    result.FlattenHalvings);
   std::printf("crease turn-back %.3g before flattening, %.3g after (input units), %d edges "
               "turning back over 1e-3 of the diagonal\n",
     result.CreaseTurnBackBeforeFlattening,
