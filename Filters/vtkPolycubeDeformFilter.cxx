@@ -271,6 +271,8 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(fields, "ChartCount", result.ChartCount);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "UnflattenedVertexCount", result.UnflattenedVertexCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "ReleasedVertexCount", result.ReleasedVertexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MaxPlaneDeviation", result.MaxPlaneDeviation);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "CreaseTurnBack", result.CreaseTurnBack);
   polycubehex::SetFieldValue<vtkDoubleArray>(

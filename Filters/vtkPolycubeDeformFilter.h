@@ -24,8 +24,10 @@
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is
  * carried to split tets), and field data `CornerCount`, `InvertedTetCount`, `PolycubeResidual`,
- * `Guidance`, `ChartCount`, `PolycubeSeconds`, `UnflattenedVertexCount` (vertices left off their
- * chart planes because snapping them would invert a tet; 0 means every chart is exactly flat) and
+ * `Guidance`, `ChartCount`, `PolycubeSeconds`, `UnflattenedVertexCount` (vertices farther than
+ * 1e-9 of the diagonal from a chart plane, left there because flattening them would invert a tet
+ * or fold a chart face; 0 means every chart is exactly flat), `ReleasedVertexCount` (vertices whose
+ * planes were not imposed exactly at the end, though possibly reached within that tolerance) and
  * `MaxPlaneDeviation` (the largest distance of a chart vertex from its plane, input units),
  * `CreaseTurnBack` and `CreaseTurnBackBeforeFlattening` (how far the mesh path of a polycube
  * edge runs back along the edge's axis, the largest over the edges, input units; 0 when every

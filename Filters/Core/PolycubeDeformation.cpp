@@ -7,6 +7,7 @@
 #include "PolycubeCreases.h"
 #include "PolycubeCutMesh.h"
 #include "PolycubeEnergy.h"
+#include "PolycubeHomotopy.h"
 #include "PolycubeNewton.h"
 #include "PolycubeRotation.h"
 #include "SparseCholesky.h"
@@ -239,7 +240,6 @@ bool ShareOne(const std::vector<int>& a, const std::vector<int>& b)
   return false;
 }
 
-
 /// ComputeTetTopology, and on a cut mesh only the boundary of the input as boundary (the faces
 /// of the cuts are not aligned, labelled or flattened).
 void RefreshTopology(const WorkMesh& mesh, TetTopology& topology)
@@ -304,7 +304,9 @@ PolycubeCharts PlaneCharts(const WorkMesh& mesh,
   return ComputePolycubeCharts(mesh.X, faces, adjacency, labels);
 }
 
-PolycubeCharts PlaneCharts(const WorkMesh& mesh, const Triangles& faces, const std::vector<int>& labels)
+PolycubeCharts PlaneCharts(const WorkMesh& mesh,
+  const Triangles& faces,
+  const std::vector<int>& labels)
 {
   return PlaneCharts(mesh, faces, CreaseAdjacency(mesh, faces), labels);
 }
@@ -402,8 +404,7 @@ Status FramePoissonStart(WorkMesh& mesh,
   {
     return Status::Failure("ComputePolycube: the frame-guided Poisson system is singular");
   }
-  const Eigen::VectorXd y =
-    solver.Solve(bt * (hessian * (rest - reduction.Offset) - gradient));
+  const Eigen::VectorXd y = solver.Solve(bt * (hessian * (rest - reduction.Offset) - gradient));
   const Eigen::VectorXd x = reduction.Expand(y);
   const double ratio = energy.MinVolumeRatio(x.data());
   out.InitialRotation.setIdentity();
@@ -576,8 +577,12 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
   for (int round = 0; round < params.MonotoneRepairRounds; ++round)
   {
     const std::vector<int> before = labels;
-    const int shaved = ShaveTurnedBackCreases(
-      mesh.X, faces, PlaneCharts(mesh, faces, adjacency, labels), creases, params.MonotoneRepairTolerance, labels);
+    const int shaved = ShaveTurnedBackCreases(mesh.X,
+      faces,
+      PlaneCharts(mesh, faces, adjacency, labels),
+      creases,
+      params.MonotoneRepairTolerance,
+      labels);
     if (shaved == 0)
     {
       break;
@@ -605,7 +610,8 @@ Status RepairTurnedBackCreases(WorkMesh& mesh,
   }
   if (roundsRun == 0)
   {
-    return Status::Success(); // nothing could be shaved (closed-loop creases): the shape is untouched
+    return Status::Success(); // nothing could be shaved (closed-loop creases): the shape is
+                              // untouched
   }
   labels = bestLabels;
   mesh.X = bestX;
@@ -627,7 +633,8 @@ Status FrameGuidedStart(WorkMesh& mesh,
   Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
   for (Eigen::Index t = 0; t < mesh.Cells.rows(); ++t)
   {
-    const Eigen::Matrix3d& frame = tetFrames[static_cast<size_t>(mesh.ParentTet[static_cast<size_t>(t)])];
+    const Eigen::Matrix3d& frame =
+      tetFrames[static_cast<size_t>(mesh.ParentTet[static_cast<size_t>(t)])];
     if (!frame.allFinite() || std::abs(frame.determinant() - 1.0) > 1e-3)
     {
       return Status::Failure("ComputePolycube: the frame of tet " +
@@ -713,8 +720,8 @@ Status ComputePolycube(const TetMesh& input,
   }
   if (!tetFrames.empty() && static_cast<Eigen::Index>(tetFrames.size()) != input.Cells.rows())
   {
-    return Status::Failure("ComputePolycube: " + std::to_string(tetFrames.size()) +
-      " frames for " + std::to_string(input.Cells.rows()) + " tets");
+    return Status::Failure("ComputePolycube: " + std::to_string(tetFrames.size()) + " frames for " +
+      std::to_string(input.Cells.rows()) + " tets");
   }
 
   // About 4 kB per tet at the peak (the Hessian's 3x3 blocks and its factorisations).
@@ -851,8 +858,10 @@ Status ComputePolycube(const TetMesh& input,
   double finalBarrier = params.BarrierWeight;
   PolycubeEnergyWeights lastWeights; // of the continuation's last round
   {
-    PolycubeEnergy energy(
-      mesh.Rest, mesh.Cells, topology.BoundaryFaces, NormalPairsAcrossCuts(mesh, topology, params.NormalDifferenceAcrossCuts));
+    PolycubeEnergy energy(mesh.Rest,
+      mesh.Cells,
+      topology.BoundaryFaces,
+      NormalPairsAcrossCuts(mesh, topology, params.NormalDifferenceAcrossCuts));
     VariableReduction reduction = VariableReduction::Identity(mesh.VertexCount());
     if (closedForm)
     {
@@ -1014,7 +1023,8 @@ Status ComputePolycube(const TetMesh& input,
       for (const auto& e : topology.Edges)
       {
         if (boundaryEdges.count(e) == 0 &&
-          ShareOne(vertexCharts[static_cast<size_t>(e[0])], vertexCharts[static_cast<size_t>(e[1])]))
+          ShareOne(
+            vertexCharts[static_cast<size_t>(e[0])], vertexCharts[static_cast<size_t>(e[1])]))
         {
           edges.push_back(e);
         }
@@ -1100,10 +1110,9 @@ Status ComputePolycube(const TetMesh& input,
     adjacency = BoundaryAdjacency(mesh, topology.BoundaryFaces);
     charts = PlaneCharts(mesh, topology.BoundaryFaces, labels);
     out.CreaseTurnBackBeforeFlattening = frame.Scale *
-      MaxCreaseTurnBack(ComputePolycubeCreases(mesh.X,
-                          topology.BoundaryFaces,
-                          CreaseAdjacency(mesh, topology.BoundaryFaces),
-                          charts),
+      MaxCreaseTurnBack(
+        ComputePolycubeCreases(
+          mesh.X, topology.BoundaryFaces, CreaseAdjacency(mesh, topology.BoundaryFaces), charts),
         0.0);
     // The flattening of an earlier labelling attempt counts as flattening, not as labelling.
     out.LabelingSeconds = SecondsSince(labelStart) - out.FlatteningSeconds;
@@ -1155,7 +1164,7 @@ Status ComputePolycube(const TetMesh& input,
       plane[static_cast<size_t>(c)] =
         planeSum[static_cast<size_t>(root)] / planeWeight[static_cast<size_t>(root)];
     }
-    std::map<int, double> anchors; // coordinate 3v+a -> plane
+    std::map<int, double> anchors;  // coordinate 3v+a -> plane
     std::map<int, int> anchorGroup; // coordinate 3v+a -> its plane's group of charts
     for (int v = 0; v < mesh.VertexCount(); ++v)
     {
@@ -1269,7 +1278,8 @@ Status ComputePolycube(const TetMesh& input,
           out.FlattenDeviation = stats.Terms.MaxAnchorDeviation;
           for (size_t f = 0; f < folded.size(); ++f)
           {
-            if (folded[f] >= 0 && energy.FaceOrientation(x.data(), static_cast<int>(f), folded[f]) > 0.0)
+            if (folded[f] >= 0 &&
+              energy.FaceOrientation(x.data(), static_cast<int>(f), folded[f]) > 0.0)
             {
               guarded[f] = folded[f];
               folded[f] = -1;
@@ -1306,6 +1316,27 @@ Status ComputePolycube(const TetMesh& input,
           out.FlatteningSeconds += SecondsSince(flattenStart);
           continue; // mesh.X still holds the deformed, unflattened positions
         }
+      }
+      if (!closedForm && params.FlattenHomotopySteps > 0)
+      {
+        // The rest of the way with the planes hard (PolycubeHomotopy.h).
+        energy.SetAnchors({}, {});
+        HomotopySettings homotopy;
+        homotopy.MaxSteps = params.FlattenHomotopySteps;
+        homotopy.RelaxIterations = params.FlattenRelaxIterations;
+        homotopy.FreezeBelow = params.FlattenFreezeBelow;
+        homotopy.LinearSolver = solverType;
+        HomotopyStats followed;
+        status = FollowAnchors(energy, anchorIndex, anchorTarget, homotopy, x, followed);
+        if (!status)
+        {
+          return Status::Failure("ComputePolycube: " + status.Message());
+        }
+        out.FlattenHomotopySteps = followed.Steps;
+        out.FlattenHomotopyFraction = followed.SmallestFraction;
+        out.FlattenFrozenAnchors = followed.FrozenAnchors;
+        out.FlattenHalvings += followed.Halvings;
+        out.FlattenDeviation = followed.Deviation;
       }
       // Make the planes exact. Where that would invert a tet or fold a chart face (a labelling the
       // connectivity cannot realise), the vertices of the offending elements keep their penalised
@@ -1406,7 +1437,7 @@ Status ComputePolycube(const TetMesh& input,
       };
       std::vector<int> fixedIndex, freeIndex;
       std::vector<double> fixedTarget, freeTarget;
-      out.UnflattenedVertexCount =
+      out.ReleasedVertexCount =
         partitionAnchors(released, freeIndex, freeTarget, fixedIndex, fixedTarget);
       if (!energy.IsFeasible(snapped.data()))
       {
@@ -1452,7 +1483,8 @@ Status ComputePolycube(const TetMesh& input,
               {
                 continue;
               }
-              const auto first = groupCoordinate.emplace(anchorGroup[anchorIndex[i]], anchorIndex[i]);
+              const auto first =
+                groupCoordinate.emplace(anchorGroup[anchorIndex[i]], anchorIndex[i]);
               if (!first.second)
               {
                 equalities.push_back({ anchorIndex[i], first.first->second });
@@ -1485,7 +1517,8 @@ Status ComputePolycube(const TetMesh& input,
             {
               const bool touches = bad[static_cast<size_t>(mesh.Cells(t, 0))] ||
                 bad[static_cast<size_t>(mesh.Cells(t, 1))] ||
-                bad[static_cast<size_t>(mesh.Cells(t, 2))] || bad[static_cast<size_t>(mesh.Cells(t, 3))];
+                bad[static_cast<size_t>(mesh.Cells(t, 2))] ||
+                bad[static_cast<size_t>(mesh.Cells(t, 3))];
               for (int k = 0; k < 4 && touches; ++k)
               {
                 ring[static_cast<size_t>(mesh.Cells(t, k))] = 1;
@@ -1530,14 +1563,15 @@ Status ComputePolycube(const TetMesh& input,
           }
           std::vector<int> looseIndex, hardIndex;
           std::vector<double> looseTarget, hardTarget;
-          out.UnflattenedVertexCount =
+          out.ReleasedVertexCount =
             partitionAnchors(loose, looseIndex, looseTarget, hardIndex, hardTarget);
           energy.SetAnchors(looseIndex, looseTarget);
           snapped = projected;
         }
         else
         {
-          reduction = VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget);
+          reduction =
+            VariableReduction::FixCoordinates(mesh.VertexCount(), fixedIndex, fixedTarget);
         }
         NewtonSettings settings;
         settings.LinearSolver = solverType;
@@ -1549,14 +1583,6 @@ Status ComputePolycube(const TetMesh& input,
         if (!status)
         {
           return Status::Failure("ComputePolycube: " + status.Message());
-        }
-        if (out.UnflattenedVertexCount > 0)
-        {
-          std::ostringstream message;
-          message << out.UnflattenedVertexCount
-                  << " vertices stay off their chart planes (within the flattening penalty's "
-                     "tolerance): snapping them would invert a tet or fold a chart face";
-          out.Warnings.push_back(message.str());
         }
       }
       mesh.X = Unflat(snapped);
@@ -1632,7 +1658,8 @@ Status ComputePolycube(const TetMesh& input,
     // Corners of M: copies are one vertex, and a chart that continues across a cut is one chart.
     const Triangles glued = IdentityFaces(topology.BoundaryFaces, mesh.Identity);
     const std::vector<int> linked = ChartsAcrossCuts(
-      FacesAcrossCuts(topology.BoundaryFaces, BoundaryAdjacency(mesh, topology.BoundaryFaces), mesh.Copies),
+      FacesAcrossCuts(
+        topology.BoundaryFaces, BoundaryAdjacency(mesh, topology.BoundaryFaces), mesh.Copies),
       mesh.Transitions,
       labels,
       charts.FaceChart,
@@ -1657,24 +1684,42 @@ Status ComputePolycube(const TetMesh& input,
       frame.Scale * frame.Scale;
     out.MinVolumeRatio = std::min(out.MinVolumeRatio, volume / rest);
   }
+  // A vertex is on its planes when it is within 1e-9 of the diagonal of each (DESIGN.md's
+  // tolerance for distinct points): released vertices that the flattening brought that close
+  // count as flat.
   out.MaxPlaneDeviation = 0.0;
+  std::vector<char> offPlane(static_cast<size_t>(out.Positions.rows()), 0);
   for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
   {
     const int chart = charts.FaceChart[static_cast<size_t>(f)];
     const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
     for (int c = 0; c < 3; ++c)
     {
-      out.MaxPlaneDeviation = std::max(out.MaxPlaneDeviation,
-        std::abs(out.Positions(topology.BoundaryFaces(f, c), axis) -
-          out.ChartPlane[static_cast<size_t>(chart)]));
+      const int v = topology.BoundaryFaces(f, c);
+      const double deviation =
+        std::abs(out.Positions(v, axis) - out.ChartPlane[static_cast<size_t>(chart)]);
+      out.MaxPlaneDeviation = std::max(out.MaxPlaneDeviation, deviation);
+      if (params.Flatten && deviation > 1e-9 * frame.Scale)
+      {
+        offPlane[static_cast<size_t>(v)] = 1;
+      }
     }
+  }
+  out.UnflattenedVertexCount = static_cast<int>(std::count(offPlane.begin(), offPlane.end(), 1));
+  if (out.UnflattenedVertexCount > 0)
+  {
+    std::ostringstream message;
+    message << out.UnflattenedVertexCount
+            << " vertices stay off their chart planes by more than 1e-9 of the diagonal (at most "
+            << out.MaxPlaneDeviation / frame.Scale
+            << " of it): snapping them would invert a tet or fold a chart face";
+    out.Warnings.push_back(message.str());
   }
   // Unit-diagonal positions: the tolerance is 1e-3 of the diagonal.
   out.CreaseTurnBack = frame.Scale *
-    MaxCreaseTurnBack(ComputePolycubeCreases(mesh.X,
-                        topology.BoundaryFaces,
-                        CreaseAdjacency(mesh, topology.BoundaryFaces),
-                        charts),
+    MaxCreaseTurnBack(
+      ComputePolycubeCreases(
+        mesh.X, topology.BoundaryFaces, CreaseAdjacency(mesh, topology.BoundaryFaces), charts),
       1e-3,
       &out.TurnedBackCreaseCount);
   out.FoldedFaceCount = 0;

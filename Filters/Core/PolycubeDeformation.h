@@ -128,6 +128,16 @@ struct PolycubeParameters
   int FlattenRounds = 8;
   /// Flattening: Newton iterations per anchor round and for the final hard-constrained solve.
   int FlattenIterations = 5;
+  /// Flattening, Uniform guidance: after the penalty rounds, at most this many homotopy steps
+  /// carry the chart coordinates the rest of the way to their planes with the planes hard
+  /// (PolycubeNewtonSolver::Follow), each followed by FlattenRelaxIterations Newton iterations.
+  /// The stiff penalty leaves the block-preconditioned CG an ill-conditioned system that it
+  /// solves poorly; without it the steps are well-posed. 0: off.
+  int FlattenHomotopySteps = 40;
+  int FlattenRelaxIterations = 2;
+  /// A homotopy step that can take less than this fraction of its move freezes the anchors that
+  /// block it (HomotopySettings::FreezeBelow).
+  double FlattenFreezeBelow = 1.0 / 16.0;
 
   /// Linear solver of the Newton steps.
   enum class LinearSolverType
@@ -144,13 +154,13 @@ struct PolycubeParameters
 /// One continuation round of ComputePolycube, for diagnostics (PolycubeResult::RoundLog).
 struct PolycubeRound
 {
-  double Weight = 0.0;         ///< w_k
-  double Epsilon = 0.0;        ///< eps_k
+  double Weight = 0.0;           ///< w_k
+  double Epsilon = 0.0;          ///< eps_k
   double BarrierThreshold = 0.0; ///< the barrier's zone in this round (a volume ratio)
-  double Residual = 0.0;       ///< polycube residual at the end of the round
-  double MinVolumeRatio = 0.0; ///< smallest deformed / rest tet volume at the end
-  double Arap = 0.0;           ///< E_arap at the end
-  int Iterations = 0;          ///< Newton iterations
+  double Residual = 0.0;         ///< polycube residual at the end of the round
+  double MinVolumeRatio = 0.0;   ///< smallest deformed / rest tet volume at the end
+  double Arap = 0.0;             ///< E_arap at the end
+  int Iterations = 0;            ///< Newton iterations
   int CgIterations = 0;
   int InfeasibleTrials = 0; ///< line-search halvings because a tet would invert
   int ArmijoTrials = 0;     ///< line-search halvings for the sufficient decrease
@@ -182,16 +192,28 @@ struct PolycubeResult
   double Residual = 0.0;          ///< polycube residual before flattening (DESIGN.md §4)
   bool Converged = false;         ///< Residual < ResidualTolerance
   double MaxPlaneDeviation = 0.0; ///< largest distance of a chart vertex to its plane, input units
-  /// Vertices left off their chart planes because snapping them would invert a tet or fold a
-  /// chart face (a labelling the connectivity cannot realise); 0 means every chart is exact.
+  /// Vertices farther than 1e-9 of the diagonal from one of their chart planes (DESIGN.md's
+  /// tolerance): the flattening could not bring them there without inverting a tet or folding
+  /// a chart face (a labelling the connectivity cannot realise). 0 means every chart is exact.
   int UnflattenedVertexCount = 0;
-  /// How the penalised flattening of the last labelling ended, before the snap: the largest
-  /// distance of an anchored coordinate to its plane (a fraction of the diagonal; the penalty
-  /// alone reaches about 1e-8 where the labels can be flattened), and the line-search halvings
-  /// that kept every tet positive, over all its Newton iterations. Many halvings with a large
-  /// deviation mean the flattening stalled, not that it converged onto bad labels.
+  /// Vertices whose planes were not imposed exactly at the end (snapping them would have
+  /// inverted a tet or folded a chart face); the flattening may still have brought them within
+  /// the tolerance above.
+  int ReleasedVertexCount = 0;
+  /// How the flattening of the last labelling ended, before the snap: the largest distance of
+  /// an anchored coordinate to its plane (a fraction of the diagonal; the penalty alone reaches
+  /// at most about 1e-8 where the labels can be flattened, the homotopy 0), and the line-search
+  /// halvings that kept every tet positive, over all its Newton iterations and homotopy steps.
+  /// Many halvings with a large deviation mean the flattening stalled, not that it converged
+  /// onto bad labels.
   double FlattenDeviation = 0.0;
   int FlattenHalvings = 0;
+  /// Homotopy steps taken after the penalty rounds (FlattenHomotopySteps), the smallest
+  /// fraction of its remaining move one of them could take (1: nothing held it back), and the
+  /// anchored coordinates it froze where a fold blocked them (HomotopySettings::FreezeBelow).
+  int FlattenHomotopySteps = 0;
+  double FlattenHomotopyFraction = 1.0;
+  int FlattenFrozenAnchors = 0;
   /// Largest turn-back of a crease (PolycubeCreases.h: how far the mesh path of a polycube edge
   /// runs back along the edge's axis, folding the faces between its turning points), in input
   /// units: in the shape the charts were labelled on, and in the result. 0 for monotone creases.
@@ -213,13 +235,13 @@ struct PolycubeResult
   /// cuts), and the number of copy pairs the relations tie.
   Points CutTranslations;
   int CopyCount = 0;
-  int Rounds = 0;     ///< continuation rounds (0: the input was already a polycube)
+  int Rounds = 0; ///< continuation rounds (0: the input was already a polycube)
   std::vector<PolycubeRound> RoundLog; ///< one entry per continuation round
-  int Iterations = 0; ///< Newton iterations, all phases
+  int Iterations = 0;                  ///< Newton iterations, all phases
   int PresplitEdgeCount = 0;
-  int SplitEdgeCount = 0;      ///< edges split after labelling
-  int SplitTetCount = 0;       ///< tets split at their centroid after labelling
-  int RelabelledFaceCount = 0; ///< faces relabelled by the chart clean-up
+  int SplitEdgeCount = 0;              ///< edges split after labelling
+  int SplitTetCount = 0;               ///< tets split at their centroid after labelling
+  int RelabelledFaceCount = 0;         ///< faces relabelled by the chart clean-up
   int CollapseRelabelledFaceCount = 0; ///< faces relabelled because flattening collapsed them
   double RotationSeconds = 0.0;
   double OptimizationSeconds = 0.0;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolycubeEnergy.h"
 
-#include "ThreadCount.h"
 #include "TetGeometry.h"
+#include "ThreadCount.h"
 
 #include <Eigen/Dense>
 
@@ -25,7 +25,6 @@ int AlignmentAxis(const std::vector<int>& labels, int face)
   const int label = labels[static_cast<size_t>(face)];
   return label >= 0 ? label / 2 : -1;
 }
-
 
 Eigen::Matrix3d Cross(const Eigen::Vector3d& v)
 {
@@ -262,14 +261,16 @@ PolycubeEnergy::PolycubeEnergy(const Points& rest,
     {
       for (int j = 3; j < edge.VertexCount; ++j)
       {
-        pairs.push_back({ edge.Vertices[static_cast<size_t>(i)], edge.Vertices[static_cast<size_t>(j)] });
+        pairs.push_back(
+          { edge.Vertices[static_cast<size_t>(i)], edge.Vertices[static_cast<size_t>(j)] });
       }
     }
     for (int i = 3; i < edge.VertexCount; ++i)
     {
       for (int j = i + 1; j < edge.VertexCount; ++j)
       {
-        pairs.push_back({ edge.Vertices[static_cast<size_t>(i)], edge.Vertices[static_cast<size_t>(j)] });
+        pairs.push_back(
+          { edge.Vertices[static_cast<size_t>(i)], edge.Vertices[static_cast<size_t>(j)] });
       }
     }
   };
@@ -393,6 +394,39 @@ bool PolycubeEnergy::IsFeasible(const double* x) const
     }
   }
   return true;
+}
+
+std::vector<int> PolycubeEnergy::InfeasibleVertices(const double* x) const
+{
+  std::vector<int> vertices;
+  const int tetCount = static_cast<int>(this->Cells.rows());
+  for (int t = 0; t < tetCount; ++t)
+  {
+    const double v = TetSignedVolume(Row(x, this->Cells(t, 0)),
+      Row(x, this->Cells(t, 1)),
+      Row(x, this->Cells(t, 2)),
+      Row(x, this->Cells(t, 3)));
+    if (!(v > 0.0))
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        vertices.push_back(this->Cells(t, k));
+      }
+    }
+  }
+  for (size_t f = 0; f < this->FaceLabel.size(); ++f)
+  {
+    if (this->FaceLabel[f] >= 0 && !(this->FaceOrientation(x, static_cast<int>(f)) > 0.0))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        vertices.push_back(this->Faces(static_cast<Eigen::Index>(f), k));
+      }
+    }
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
 }
 
 double PolycubeEnergy::MinVolumeRatio(const double* x) const
@@ -673,8 +707,8 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
   {
     const Eigen::Vector3d& n0 = normal[static_cast<size_t>(edge.Faces[0])];
     const Eigen::Vector3d& n1 = normal[static_cast<size_t>(edge.Faces[1])];
-    difference += edge.Weight * ((edge.Rotated ? Eigen::Vector3d(edge.Rotation * n0) : n0) - n1)
-        .squaredNorm();
+    difference +=
+      edge.Weight * ((edge.Rotated ? Eigen::Vector3d(edge.Rotation * n0) : n0) - n1).squaredNorm();
   }
   terms.Difference = difference;
   for (size_t i = 0; i < this->AnchorIndex.size(); ++i)
@@ -693,10 +727,8 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
   }
   // Both orientation terms are functions of d_f = s u_axis / A_rest, u = e1 x e2 / 2; phi gives
   // the term's value and its first and (Gauss-Newton for the penalty) second derivatives in d.
-  auto addOrientationTerm = [&](const std::vector<int>& faceLabels,
-                              double weight,
-                              double& value,
-                              const auto& phi)
+  auto addOrientationTerm =
+    [&](const std::vector<int>& faceLabels, double weight, double& value, const auto& phi)
   {
     const double scale = weight / static_cast<double>(std::max(1, faceCount));
     for (int f = 0; f < static_cast<int>(faceLabels.size()); ++f)
@@ -866,9 +898,9 @@ bool PolycubeEnergy::EvaluateDerivatives(const double* x,
       const int f = edge.Faces[0];
       const int g = edge.Faces[1];
       // d = R n_f - n_g, its Jacobian per vertex of the edge.
-      const Eigen::Vector3d d = (edge.Rotated
-          ? Eigen::Vector3d(edge.Rotation * normal[static_cast<size_t>(f)])
-          : normal[static_cast<size_t>(f)]) -
+      const Eigen::Vector3d d =
+        (edge.Rotated ? Eigen::Vector3d(edge.Rotation * normal[static_cast<size_t>(f)])
+                      : normal[static_cast<size_t>(f)]) -
         normal[static_cast<size_t>(g)];
       const double c = 2.0 * w.NormalDifference * edge.Weight;
       const int count = edge.VertexCount;

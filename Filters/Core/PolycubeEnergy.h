@@ -149,6 +149,10 @@ public:
   /// its label's direction: where the energy is finite.
   bool IsFeasible(const double* x) const;
 
+  /// Where IsFeasible fails: the vertices (sorted, unique) of the tets that are not positive at
+  /// x and of the labelled faces folded over their label's direction.
+  std::vector<int> InfeasibleVertices(const double* x) const;
+
   /// Projected area ratio d_f of a labelled face (see FaceBarrier).
   double FaceOrientation(const double* x, int face) const
   {
@@ -183,7 +187,7 @@ private:
   /// One term of eq. (12): Weight |Rotation n_0 - n_1|^2 for the faces' unit normals n_0, n_1.
   struct DiffEdge
   {
-    std::array<int, 2> Faces;      ///< the two boundary faces
+    std::array<int, 2> Faces; ///< the two boundary faces
     /// face 0's corners, then face 1's corners that are not face 0's: 4 vertices for two faces
     /// that share an edge, 6 across a cut (the shared edge is two pairs of copies)
     std::array<int, 6> Vertices;

@@ -26,8 +26,7 @@ double SecondsSince(std::chrono::steady_clock::time_point start)
 template<typename Task>
 void RunTasks(int count, const Task& task)
 {
-  const int threads =
-    std::min(count, static_cast<int>(ThreadCount()));
+  const int threads = std::min(count, static_cast<int>(ThreadCount()));
   if (threads <= 1)
   {
     for (int i = 0; i < count; ++i)
@@ -121,8 +120,8 @@ public:
         {
           return;
         }
-        ok[a] = this->Solvers[static_cast<size_t>(a)].Factorize(
-          this->Blocks[static_cast<size_t>(a)], mu);
+        ok[a] =
+          this->Solvers[static_cast<size_t>(a)].Factorize(this->Blocks[static_cast<size_t>(a)], mu);
       });
     return ok[0] && ok[1] && ok[2];
   }
@@ -321,7 +320,10 @@ VariableReduction VariableReduction::ShareCoordinates(int vertexCount,
 class ReducedHessian
 {
 public:
-  void Compute(const SparseMatrix& b, const SparseMatrix& bt, const SparseMatrix& h, SparseMatrix& out)
+  void Compute(const SparseMatrix& b,
+    const SparseMatrix& bt,
+    const SparseMatrix& h,
+    SparseMatrix& out)
   {
     if (!this->Ready)
     {
@@ -387,11 +389,12 @@ struct PolycubeNewtonSolver::Factorizations
 {
   SparseMatrix Bt;
   SparseMatrix TrialHessian; ///< the Hessian at the line search's first trial
-  SparseMatrix Reduced; ///< B^T H B when the reduction is not the identity
+  SparseMatrix Reduced;      ///< B^T H B when the reduction is not the identity
   ReducedHessian ReducedProduct;
   AxisBlockPreconditioner Preconditioner;
   Eigen::SimplicialLDLT<SparseMatrix> DirectSolver;
   bool DirectAnalyzed = false;
+  bool PreconditionerFactorized = false;
 };
 
 PolycubeNewtonSolver::PolycubeNewtonSolver(const PolycubeEnergy& energy,
@@ -409,6 +412,179 @@ PolycubeNewtonSolver::PolycubeNewtonSolver(const PolycubeEnergy& energy,
 }
 
 PolycubeNewtonSolver::~PolycubeNewtonSolver() = default;
+
+Status PolycubeNewtonSolver::Follow(Eigen::VectorXd& x,
+  const Eigen::VectorXd& jump,
+  const NewtonSettings& settings,
+  NewtonStats& stats,
+  double& fraction,
+  std::vector<int>* blocking)
+{
+  stats = NewtonStats();
+  fraction = 0.0;
+  const VariableReduction& reduction = this->Reduction;
+  Factorizations& solvers = *this->Solvers;
+  const int n = static_cast<int>(x.size());
+  Eigen::VectorXd gradient(n);
+  Eigen::VectorXd areaGradient(n);
+  PolycubeEnergyTerms terms;
+  auto evaluateStart = std::chrono::steady_clock::now();
+  if (!this->Energy.EvaluateDerivatives(x.data(), terms, gradient, &this->Hessian, &areaGradient))
+  {
+    return Status::Failure("the polycube solver was started from a mesh with a non-positive tet");
+  }
+  stats.EvaluateSeconds += SecondsSince(evaluateStart);
+  ++stats.Evaluations;
+  stats.Terms = terms;
+
+  // The quadratic model at x + jump + B dy: its gradient in y is B^T (g + H jump) + B^T H B dy
+  // (plus the rank-one area term's share of the jump).
+  const auto solveStart = std::chrono::steady_clock::now();
+  Eigen::VectorXd pushed = gradient + this->Hessian * jump;
+  const double rankOne = this->Energy.AreaRankOneCoefficient();
+  if (rankOne != 0.0)
+  {
+    pushed += (rankOne * areaGradient.dot(jump)) * areaGradient;
+  }
+  const SparseMatrix* hy = &this->Hessian;
+  Eigen::VectorXd gy = pushed;
+  Eigen::VectorXd ay = areaGradient;
+  if (!reduction.IsIdentity)
+  {
+    solvers.ReducedProduct.Compute(reduction.B, solvers.Bt, this->Hessian, solvers.Reduced);
+    hy = &solvers.Reduced;
+    gy = solvers.Bt * pushed;
+    ay = solvers.Bt * areaGradient;
+  }
+  Eigen::VectorXd direction;
+  // The factorisation of the previous Minimize call (nearly the same Hessian) serves CG here.
+  const bool refactor = !settings.ReusePreconditioner || !solvers.PreconditionerFactorized;
+  const Status solved = this->SolveNewtonSystem(*hy, -gy, ay, settings, refactor, stats, direction);
+  if (!solved)
+  {
+    return solved;
+  }
+  stats.SolveSeconds += SecondsSince(solveStart);
+  const Eigen::VectorXd dx =
+    jump + (reduction.IsIdentity ? direction : Eigen::VectorXd(reduction.B * direction));
+
+  // The largest fraction of the move that keeps the barrier's domain.
+  double step = 1.0;
+  Eigen::VectorXd rejected;
+  for (int attempt = 0; attempt < 30; ++attempt, step *= 0.5)
+  {
+    Eigen::VectorXd trial = x + step * dx;
+    if (this->Energy.IsFeasible(trial.data()))
+    {
+      x.swap(trial);
+      fraction = step;
+      stats.LastStep = step;
+      ++stats.Iterations;
+      break;
+    }
+    ++stats.InfeasibleTrials;
+    rejected.swap(trial);
+  }
+  stats.LineSearchFailed = fraction == 0.0;
+  if (blocking)
+  {
+    blocking->clear();
+    if (rejected.size() > 0)
+    {
+      *blocking = this->Energy.InfeasibleVertices(rejected.data());
+    }
+  }
+  return Status::Success();
+}
+
+Status PolycubeNewtonSolver::SolveNewtonSystem(const SparseMatrix& hy,
+  const Eigen::VectorXd& rhs,
+  const Eigen::VectorXd& ay,
+  const NewtonSettings& settings,
+  bool refactor,
+  NewtonStats& stats,
+  Eigen::VectorXd& direction)
+{
+  const double mu = settings.Regularization * hy.diagonal().mean() + 1e-300;
+  const double rankOne = this->Energy.AreaRankOneCoefficient();
+  Factorizations& solvers = *this->Solvers;
+  direction = Eigen::VectorXd::Zero(rhs.size());
+
+  if (settings.LinearSolver == NewtonSettings::LinearSolverType::Direct)
+  {
+    SparseMatrix m = hy;
+    m.diagonal().array() += mu;
+    if (!solvers.DirectAnalyzed)
+    {
+      solvers.DirectSolver.analyzePattern(m);
+      solvers.DirectAnalyzed = true;
+    }
+    solvers.DirectSolver.factorize(m);
+    direction = solvers.DirectSolver.solve(rhs);
+    if (rankOne != 0.0)
+    {
+      // Sherman-Morrison for the rank-one area term c a a^T.
+      const Eigen::VectorXd z = solvers.DirectSolver.solve(ay);
+      direction -= z * (rankOne * ay.dot(direction) / (1.0 + rankOne * ay.dot(z)));
+    }
+  }
+  else
+  {
+    const auto factorStart = std::chrono::steady_clock::now();
+    if (refactor)
+    {
+      solvers.PreconditionerFactorized = false;
+      if (!solvers.Preconditioner.Factorize(hy, this->Reduction.VariableAxis, mu))
+      {
+        return Status::Failure("the polycube solver's preconditioner is not positive definite");
+      }
+      solvers.PreconditionerFactorized = true;
+    }
+    stats.FactorSeconds += SecondsSince(factorStart);
+    auto apply = [&](const Eigen::VectorXd& v)
+    {
+      Eigen::VectorXd out;
+      SymmetricProduct(hy, v, out);
+      out += mu * v;
+      if (rankOne != 0.0)
+      {
+        out += (rankOne * ay.dot(v)) * ay;
+      }
+      return out;
+    };
+    Eigen::VectorXd r = rhs;
+    const double stop = settings.CgTolerance * r.norm();
+    Eigen::VectorXd z = solvers.Preconditioner.Solve(r);
+    Eigen::VectorXd p = z;
+    double rz = r.dot(z);
+    for (int k = 0; k < settings.MaxCgIterations; ++k)
+    {
+      const Eigen::VectorXd q = apply(p);
+      const double pq = p.dot(q);
+      if (!(pq > 0.0))
+      {
+        if (k == 0)
+        {
+          direction = z;
+        }
+        break;
+      }
+      const double alpha = rz / pq;
+      direction += alpha * p;
+      r -= alpha * q;
+      ++stats.CgIterations;
+      if (r.norm() <= stop)
+      {
+        break;
+      }
+      z = solvers.Preconditioner.Solve(r);
+      const double rzNext = r.dot(z);
+      p = z + (rzNext / rz) * p;
+      rz = rzNext;
+    }
+  }
+  return Status::Success();
+}
 
 Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
   const NewtonSettings& settings,
@@ -435,7 +611,6 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
     return Status::Failure("the polycube solver was started from a mesh with a non-positive tet");
   }
   stats.Terms = terms;
-  const double rankOne = this->Energy.AreaRankOneCoefficient();
 
   for (int iteration = 0; iteration < settings.MaxIterations; ++iteration)
   {
@@ -454,79 +629,12 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
     {
       break;
     }
-    const double mu = settings.Regularization * hy->diagonal().mean() + 1e-300;
-    Eigen::VectorXd direction = Eigen::VectorXd::Zero(gy.size());
-
-    if (settings.LinearSolver == NewtonSettings::LinearSolverType::Direct)
+    Eigen::VectorXd direction;
+    const Status solved = this->SolveNewtonSystem(
+      *hy, -gy, ay, settings, iteration == 0 || !settings.ReusePreconditioner, stats, direction);
+    if (!solved)
     {
-      SparseMatrix m = *hy;
-      m.diagonal().array() += mu;
-      if (!solvers.DirectAnalyzed)
-      {
-        solvers.DirectSolver.analyzePattern(m);
-        solvers.DirectAnalyzed = true;
-      }
-      solvers.DirectSolver.factorize(m);
-      direction = solvers.DirectSolver.solve(-gy);
-      if (rankOne != 0.0)
-      {
-        // Sherman-Morrison for the rank-one area term c a a^T.
-        const Eigen::VectorXd z = solvers.DirectSolver.solve(ay);
-        direction -= z * (rankOne * ay.dot(direction) / (1.0 + rankOne * ay.dot(z)));
-      }
-    }
-    else
-    {
-      const auto factorStart = std::chrono::steady_clock::now();
-      if (iteration == 0 || !settings.ReusePreconditioner)
-      {
-        if (!solvers.Preconditioner.Factorize(*hy, reduction.VariableAxis, mu))
-        {
-          return Status::Failure("the polycube solver's preconditioner is not positive definite");
-        }
-      }
-      stats.FactorSeconds += SecondsSince(factorStart);
-      auto apply = [&](const Eigen::VectorXd& v)
-      {
-        Eigen::VectorXd out;
-        SymmetricProduct(*hy, v, out);
-        out += mu * v;
-        if (rankOne != 0.0)
-        {
-          out += (rankOne * ay.dot(v)) * ay;
-        }
-        return out;
-      };
-      Eigen::VectorXd r = -gy;
-      const double stop = settings.CgTolerance * r.norm();
-      Eigen::VectorXd z = solvers.Preconditioner.Solve(r);
-      Eigen::VectorXd p = z;
-      double rz = r.dot(z);
-      for (int k = 0; k < settings.MaxCgIterations; ++k)
-      {
-        const Eigen::VectorXd q = apply(p);
-        const double pq = p.dot(q);
-        if (!(pq > 0.0))
-        {
-          if (k == 0)
-          {
-            direction = z;
-          }
-          break;
-        }
-        const double alpha = rz / pq;
-        direction += alpha * p;
-        r -= alpha * q;
-        ++stats.CgIterations;
-        if (r.norm() <= stop)
-        {
-          break;
-        }
-        z = solvers.Preconditioner.Solve(r);
-        const double rzNext = r.dot(z);
-        p = z + (rzNext / rz) * p;
-        rz = rzNext;
-      }
+      return solved;
     }
     stats.SolveSeconds += SecondsSince(solveStart);
 

@@ -123,7 +123,34 @@ public:
     NewtonStats& stats,
     const Progress& progress = {});
 
+  /// One step of a homotopy that moves coordinates the reduction holds fixed: `jump` moves
+  /// them (it is zero on the variables' coordinates, which x carries as they are), and the
+  /// variables follow by the Newton step of the energy with the jump imposed. x moves by the
+  /// largest `fraction` of 1, 1/2, 1/4, ... of that combined move that keeps every tet positive
+  /// and every guarded face unfolded; fraction is 0 (x unchanged) when 30 halvings do not.
+  /// `blocking`, if given, receives the vertices that made the last rejected fraction
+  /// infeasible (PolycubeEnergy::InfeasibleVertices; empty when the whole move was taken).
+  /// Unlike a stiff penalty pulling the fixed coordinates, the system solved here is the
+  /// energy's own, which the block preconditioner handles well.
+  Status Follow(Eigen::VectorXd& x,
+    const Eigen::VectorXd& jump,
+    const NewtonSettings& settings,
+    NewtonStats& stats,
+    double& fraction,
+    std::vector<int>* blocking = nullptr);
+
 private:
+  /// Solves (hy + mu I + c a a^T) direction = rhs (mu the settings' ridge, c a a^T the area
+  /// term), by LDL^T or by CG preconditioned with the axis blocks (factorised anew when
+  /// `refactor`).
+  Status SolveNewtonSystem(const Eigen::SparseMatrix<double>& hy,
+    const Eigen::VectorXd& rhs,
+    const Eigen::VectorXd& ay,
+    const NewtonSettings& settings,
+    bool refactor,
+    NewtonStats& stats,
+    Eigen::VectorXd& direction);
+
   struct Factorizations;
   const PolycubeEnergy& Energy;
   const VariableReduction& Reduction;

@@ -69,6 +69,18 @@ int main(int argc, char* argv[])
   {
     params.FlattenIterations = std::atoi(value);
   }
+  if (const char* value = std::getenv("PCH_FLATTEN_HOMOTOPY_STEPS"))
+  {
+    params.FlattenHomotopySteps = std::atoi(value);
+  }
+  if (const char* value = std::getenv("PCH_FLATTEN_RELAX_ITERATIONS"))
+  {
+    params.FlattenRelaxIterations = std::atoi(value);
+  }
+  if (const char* value = std::getenv("PCH_FLATTEN_FREEZE_BELOW"))
+  {
+    params.FlattenFreezeBelow = std::atof(value);
+  }
   if (std::getenv("PCH_DIRECT"))
   {
     params.LinearSolver = PolycubeParameters::LinearSolverType::Direct;
@@ -115,7 +127,8 @@ int main(int argc, char* argv[])
   // the closed form (handle cuts, the frame field with its transitions, the cut mesh).
   std::vector<Eigen::Matrix3d> frames;
   PolycubeCuts cuts;
-  const bool closedForm = std::getenv("PCH_FRAMES") && std::string(std::getenv("PCH_FRAMES")) == "cuts";
+  const bool closedForm =
+    std::getenv("PCH_FRAMES") && std::string(std::getenv("PCH_FRAMES")) == "cuts";
   if (std::getenv("PCH_FRAMES"))
   {
     FrameFieldResult field;
@@ -152,8 +165,8 @@ int main(int argc, char* argv[])
     }
     for (Eigen::Index t = 0; t < field.Frames.rows(); ++t)
     {
-      frames.push_back(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
-        field.Frames.row(t).data()));
+      frames.push_back(
+        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(field.Frames.row(t).data()));
     }
     std::printf("frame field: %.2f s, %d singular edges, alignment %.2f deg\n",
       std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count(),
@@ -207,16 +220,22 @@ int main(int argc, char* argv[])
   {
     std::printf("frame fit residual %.4g\n", result.FrameFitResidual);
   }
-  std::printf("vertices off their chart plane %d, max plane deviation %.3g (input units), "
+  std::printf("vertices off their chart plane %d (%d released at the snap), max plane deviation "
+              "%.3g (input units), "
               "folded faces %d (%d before flattening)\n",
     result.UnflattenedVertexCount,
+    result.ReleasedVertexCount,
     result.MaxPlaneDeviation,
     result.FoldedFaceCount,
     result.InitiallyFoldedFaceCount);
-  std::printf("penalised flattening: anchor deviation %.3g of the diagonal before the snap, %d "
-              "line-search halvings\n",
+  std::printf(
+    "flattening: anchor deviation %.3g of the diagonal before the snap, %d "
+    "line-search halvings, %d homotopy steps (smallest fraction %.3g, %d anchors frozen)\n",
     result.FlattenDeviation,
-    result.FlattenHalvings);
+    result.FlattenHalvings,
+    result.FlattenHomotopySteps,
+    result.FlattenHomotopyFraction,
+    result.FlattenFrozenAnchors);
   std::printf("crease turn-back %.3g before flattening, %.3g after (input units), %d edges "
               "turning back over 1e-3 of the diagonal\n",
     result.CreaseTurnBackBeforeFlattening,
