@@ -396,7 +396,7 @@ bool PolycubeEnergy::IsFeasible(const double* x) const
   return true;
 }
 
-std::vector<int> PolycubeEnergy::InfeasibleVertices(const double* x) const
+std::vector<int> PolycubeEnergy::InfeasibleVertices(const double* x, double minVolumeRatio) const
 {
   std::vector<int> vertices;
   const int tetCount = static_cast<int>(this->Cells.rows());
@@ -406,7 +406,7 @@ std::vector<int> PolycubeEnergy::InfeasibleVertices(const double* x) const
       Row(x, this->Cells(t, 1)),
       Row(x, this->Cells(t, 2)),
       Row(x, this->Cells(t, 3)));
-    if (!(v > 0.0))
+    if (!(v > minVolumeRatio * this->RestVolume[static_cast<size_t>(t)]))
     {
       for (int k = 0; k < 4; ++k)
       {

@@ -149,9 +149,10 @@ public:
   /// its label's direction: where the energy is finite.
   bool IsFeasible(const double* x) const;
 
-  /// Where IsFeasible fails: the vertices (sorted, unique) of the tets that are not positive at
-  /// x and of the labelled faces folded over their label's direction.
-  std::vector<int> InfeasibleVertices(const double* x) const;
+  /// Where IsFeasible fails: the vertices (sorted, unique) of the tets whose volume ratio at x
+  /// is not above `minVolumeRatio` (0: not positive) and of the labelled faces folded over their
+  /// label's direction.
+  std::vector<int> InfeasibleVertices(const double* x, double minVolumeRatio = 0.0) const;
 
   /// Projected area ratio d_f of a labelled face (see FaceBarrier).
   double FaceOrientation(const double* x, int face) const

@@ -54,6 +54,8 @@ Status FollowAnchors(const PolycubeEnergy& energy,
     vertexAnchors[static_cast<size_t>(anchorIndex[i] / 3)].push_back(static_cast<int>(i));
   }
   std::vector<char> frozen(anchorIndex.size(), 0);
+  const double volumeFloor =
+    std::min(settings.MinVolumeRatio, 0.5 * energy.MinVolumeRatio(x.data()));
   Eigen::VectorXd jump = Eigen::VectorXd::Zero(x.size());
   double moving = 0.0;
   Deviations(x, anchorIndex, anchorTarget, frozen, stats.Deviation, moving);
@@ -66,7 +68,7 @@ Status FollowAnchors(const PolycubeEnergy& energy,
     NewtonStats followed;
     double fraction = 0.0;
     std::vector<int> blocking;
-    Status status = solver.Follow(x, jump, newton, followed, fraction, &blocking);
+    Status status = solver.Follow(x, jump, newton, followed, fraction, &blocking, volumeFloor);
     if (!status)
     {
       return status;
@@ -85,7 +87,7 @@ Status FollowAnchors(const PolycubeEnergy& energy,
           exact(anchorIndex[i]) = anchorTarget[i];
         }
       }
-      if (energy.IsFeasible(exact.data()))
+      if (energy.IsFeasible(exact.data()) && energy.MinVolumeRatio(exact.data()) > volumeFloor)
       {
         x.swap(exact);
       }

@@ -36,6 +36,11 @@ struct HomotopySettings
   /// energy's units: a fraction of the diagonal in ComputePolycube, 1000 times below the
   /// contract's flatness tolerance).
   double Tolerance = 1e-12;
+  /// No step may leave a tet's volume ratio (deformed over rest volume) at or below this, or
+  /// below the smallest ratio at the start when that is lower: a fold's tets would otherwise be
+  /// crushed until hex extraction counts them as flat (1e-14 of the diagonal cubed). Anchors
+  /// held back by it freeze like those held back by an inversion.
+  double MinVolumeRatio = 1e-6;
   NewtonSettings::LinearSolverType LinearSolver = NewtonSettings::LinearSolverType::BlockPcg;
 };
 

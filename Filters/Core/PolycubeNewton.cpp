@@ -418,7 +418,8 @@ Status PolycubeNewtonSolver::Follow(Eigen::VectorXd& x,
   const NewtonSettings& settings,
   NewtonStats& stats,
   double& fraction,
-  std::vector<int>* blocking)
+  std::vector<int>* blocking,
+  double minVolumeRatio)
 {
   stats = NewtonStats();
   fraction = 0.0;
@@ -474,7 +475,8 @@ Status PolycubeNewtonSolver::Follow(Eigen::VectorXd& x,
   for (int attempt = 0; attempt < 30; ++attempt, step *= 0.5)
   {
     Eigen::VectorXd trial = x + step * dx;
-    if (this->Energy.IsFeasible(trial.data()))
+    if (this->Energy.IsFeasible(trial.data()) &&
+      (minVolumeRatio <= 0.0 || this->Energy.MinVolumeRatio(trial.data()) > minVolumeRatio))
     {
       x.swap(trial);
       fraction = step;
@@ -491,7 +493,7 @@ Status PolycubeNewtonSolver::Follow(Eigen::VectorXd& x,
     blocking->clear();
     if (rejected.size() > 0)
     {
-      *blocking = this->Energy.InfeasibleVertices(rejected.data());
+      *blocking = this->Energy.InfeasibleVertices(rejected.data(), minVolumeRatio);
     }
   }
   return Status::Success();

@@ -130,6 +130,8 @@ public:
   /// and every guarded face unfolded; fraction is 0 (x unchanged) when 30 halvings do not.
   /// `blocking`, if given, receives the vertices that made the last rejected fraction
   /// infeasible (PolycubeEnergy::InfeasibleVertices; empty when the whole move was taken).
+  /// With `minVolumeRatio` > 0 a fraction is also rejected when it leaves a tet's volume ratio
+  /// at or below that value: a step must not crush tets that later stages need positive.
   /// Unlike a stiff penalty pulling the fixed coordinates, the system solved here is the
   /// energy's own, which the block preconditioner handles well.
   Status Follow(Eigen::VectorXd& x,
@@ -137,7 +139,8 @@ public:
     const NewtonSettings& settings,
     NewtonStats& stats,
     double& fraction,
-    std::vector<int>* blocking = nullptr);
+    std::vector<int>* blocking = nullptr,
+    double minVolumeRatio = 0.0);
 
 private:
   /// Solves (hy + mu I + c a a^T) direction = rhs (mu the settings' ridge, c a a^T the area

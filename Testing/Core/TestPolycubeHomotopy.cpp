@@ -2,8 +2,8 @@
 // FollowAnchors (PolycubeHomotopy.h): squashing a tet cube to a twentieth of its width by
 // moving one face's coordinates, a move that inverts tets when applied to the face alone. The
 // homotopy must land every anchored coordinate exactly on its target with every tet positive,
-// and stop where no fraction of the move keeps the tets positive (a target that turns the cube
-// inside out).
+// and stop where no fraction of the move keeps the tets above its volume floor (a target that
+// turns the cube inside out).
 #include "PolycubeHomotopy.h"
 #include "TetGeometry.h"
 
@@ -131,6 +131,8 @@ void TestInsideOut()
   std::cout << "inside out: " << stats.Steps << " steps, deviation " << stats.Deviation
             << std::endl;
   PCH_CHECK(NonPositiveTets(cube, x) == 0);
+  // Not crushed either: no tet below the volume floor that later stages need.
+  PCH_CHECK(energy.MinVolumeRatio(x.data()) > settings.MinVolumeRatio);
   PCH_CHECK(stats.Deviation > 0.5 - 1e-9);
   PCH_CHECK(stats.SmallestFraction < 1.0);
 }
