@@ -55,6 +55,7 @@ vtkPolycubeDeformFilter::vtkPolycubeDeformFilter()
   this->MonotoneRepairRounds = defaults.MonotoneRepairRounds;
   this->MinChartAreaFraction = defaults.MinChartAreaFraction;
   this->Flatten = defaults.Flatten;
+  this->FlattenHomotopySteps = defaults.FlattenHomotopySteps;
 }
 
 int vtkPolycubeDeformFilter::FillOutputPortInformation(int port, vtkInformation* info)
@@ -187,6 +188,7 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   params.MonotoneRepairRounds = this->MonotoneRepairRounds;
   params.MinChartAreaFraction = this->MinChartAreaFraction;
   params.Flatten = this->Flatten;
+  params.FlattenHomotopySteps = this->FlattenHomotopySteps;
   auto progress = [this](double fraction)
   {
     this->UpdateProgress(fraction);
@@ -330,4 +332,5 @@ void vtkPolycubeDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MonotoneRepairRounds: " << this->MonotoneRepairRounds << "\n";
   os << indent << "MinChartAreaFraction: " << this->MinChartAreaFraction << "\n";
   os << indent << "Flatten: " << this->Flatten << "\n";
+  os << indent << "FlattenHomotopySteps: " << this->FlattenHomotopySteps << "\n";
 }

@@ -5,7 +5,7 @@ can be tuned in seconds instead of re-running the cuts, frames and deformation e
 
     PYTHONPATH=build/lib/python3/dist-packages python3.11 Testing/Benchmark/hex_stage.py \
         ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--no-padding-placement] [--map-smoothing] [--soft-feature-angle 20] [--no-polish] [--mean-search-sweeps 3] \
-        [--normal-difference-weight 1] [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
+        [--normal-difference-weight 1] [--homotopy-steps 40] [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
 
 The first run writes <cache>/<model>_<guidance>.vtu (the deformation's port 0, its field data
 included); later runs read it. Prints the hex stage's seconds per step and its quality fields,
@@ -24,9 +24,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from benchmark import load, run_filter, tetrahedralize  # noqa: E402
 
 
-def polycube_of(path, guidance, cache, normal_difference_weight=None):
+def polycube_of(path, guidance, cache, normal_difference_weight=None, homotopy_steps=0):
     name = os.path.splitext(os.path.basename(path))[0]
     suffix = "" if normal_difference_weight is None else "_wdiff%g" % normal_difference_weight
+    suffix += "_homotopy%d" % homotopy_steps if homotopy_steps else ""
     cached = os.path.join(cache, "%s_%s%s.vtu" % (name, guidance, suffix))
     if os.path.exists(cached):
         reader = vtkXMLUnstructuredGridReader()
@@ -43,6 +44,7 @@ def polycube_of(path, guidance, cache, normal_difference_weight=None):
     deform.SetGuidance(deform.UNIFORM if guidance == "Uniform" else deform.FRAME_FIELD)
     if normal_difference_weight is not None:
         deform.SetNormalDifferenceWeight(normal_difference_weight)
+    deform.SetFlattenHomotopySteps(homotopy_steps)
     start = time.perf_counter()
     polycube = run_filter(deform, source)
     print("polycube: %.1f s" % (time.perf_counter() - start))
@@ -72,12 +74,15 @@ def main():
     parser.add_argument("--mean-search-sweeps", type=int, default=None)
     parser.add_argument("--normal-difference-weight", type=float, default=None,
                         help="the deformation's NormalDifferenceWeight (cached apart)")
+    parser.add_argument("--homotopy-steps", type=int, default=0,
+                        help="the deformation's FlattenHomotopySteps (cached apart)")
     parser.add_argument("--cache", default="/tmp/polycubehex-polycubes")
     parser.add_argument("--output", help="write the hexes (.vtu)")
     parser.add_argument("--worst", type=int, default=0)
     args = parser.parse_args()
 
-    polycube = polycube_of(args.model, args.guidance, args.cache, args.normal_difference_weight)
+    polycube = polycube_of(args.model, args.guidance, args.cache, args.normal_difference_weight,
+                           args.homotopy_steps)
     extract = polycubehex.vtkHexExtractFilter()
     extract.SetTargetHexCount(args.hexes)
     extract.SetSmoothing(0 if args.no_smoothing else 1)
