@@ -130,12 +130,12 @@ struct PolycubeParameters
   int FlattenIterations = 5;
   /// Flattening, Uniform guidance: after the penalty rounds, at most this many homotopy steps
   /// carry the chart coordinates the rest of the way to their planes with the planes hard
-  /// (PolycubeHomotopy.h), each followed by FlattenRelaxIterations Newton iterations. The stiff
-  /// penalty leaves the block-preconditioned CG an ill-conditioned system that it solves
-  /// poorly; without it the steps are well-posed. Off (0) by default: with 40 steps, vertices
-  /// off their planes (over 1e-9 of the diagonal) went 162 -> 57 on fertility, 16 -> 10 on
-  /// rockerarm and 24 -> 2 on elephant (before HomotopySettings::MinVolumeRatio), but the smoothed hex minima at the paper's l1 counts fell
-  /// (fertility 0.638 -> 0.507, rockerarm 0.208 -> 0.022), so it waits until that is understood.
+  /// (PolycubeHomotopy.h), each followed by FlattenRelaxIterations Newton iterations. Off (0)
+  /// by default: with 40 steps the vertices off their planes by over 1e-9 of the diagonal went
+  /// 162 -> 57 on fertility and 24 -> 2 on elephant (rockerarm: 10 either way, at its fold), but
+  /// the integer rounding then inverted more tets and the smoothed hex minima fell (fertility
+  /// 0.638 -> 0.507 at 17,910 hexes, rockerarm 0.208 -> 0.022 at 24,346, elephant 0.542 -> 0.344
+  /// at 10,000), so it waits until that is understood.
   int FlattenHomotopySteps = 0;
   int FlattenRelaxIterations = 2;
   /// A homotopy step that can take less than this fraction of its move freezes the anchors that
@@ -205,7 +205,8 @@ struct PolycubeResult
   int ReleasedVertexCount = 0;
   /// How the flattening of the last labelling ended, before the snap: the largest distance of
   /// an anchored coordinate to its plane (a fraction of the diagonal; the penalty alone reaches
-  /// at most about 1e-8 where the labels can be flattened, the homotopy 0), and the line-search
+  /// at most about 1e-8 where the labels can be flattened, the homotopy 0 but at its frozen
+  /// anchors), and the line-search
   /// halvings that kept every tet positive, over all its Newton iterations and homotopy steps.
   /// Many halvings with a large deviation mean the flattening stalled, not that it converged
   /// onto bad labels.

@@ -3,13 +3,16 @@
 // of flattening the charts of a polycube onto their planes. Internal to ComputePolycube.
 //
 // The penalised flattening (a penalty on each chart coordinate's distance to its plane, weights
-// growing to about 1e13) makes the Newton system so stiff that the inexact block-preconditioned
-// CG returns poor directions, and the line search stalls: fertility's charts stayed about
-// 2e-3 of the diagonal off their planes. Here the anchored coordinates are not variables at all.
-// Each step moves them by a fraction of their remaining distance, and the other coordinates
-// follow by the Newton step of the energy (ARAP plus the barriers) with that move imposed
-// (PolycubeNewtonSolver::Follow); the fraction halves until every tet stays positive. A few Newton
-// iterations with the anchors fixed then let the interior relax before the next step.
+// growing to about 1e13) makes the Newton system stiff, and the inexact block-preconditioned CG
+// returns poor directions there: fertility's charts stayed about 2e-3 of the diagonal off their
+// planes. Here the anchored coordinates are not variables at all. Each step moves them by a
+// fraction of their remaining distance, and the other coordinates follow by the Newton step of
+// the energy (ARAP plus the barriers) with that move imposed (PolycubeNewtonSolver::Follow); the
+// fraction halves until every tet stays positive and above a volume floor, every guarded chart
+// face unfolded. A few Newton iterations with the anchors fixed then let the interior relax
+// before the next step. Where a tet or a face blocks the move (a fold of the labels), the
+// anchors of its vertices freeze; on fertility 90 froze about 2e-3 off, so the stiffness was not
+// the whole story there, but 162 vertices off their planes became 57.
 #pragma once
 
 #include "PolycubeEnergy.h"
