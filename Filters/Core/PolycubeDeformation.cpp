@@ -1593,22 +1593,28 @@ Status ComputePolycube(const TetMesh& input,
 
   // On a cut mesh the planes were unknowns of the last solve: read them back.
   if (closedForm)
+  // The median, not the mean: the vertices released at the snap sit off the plane, and a mean
+  // would move it off the exact value that every other vertex of the chart shares.
   {
-    std::vector<double> sum(plane.size(), 0.0);
-    std::vector<int> tally(plane.size(), 0);
+    std::vector<std::vector<double>> values(plane.size());
     for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
     {
       const int chart = charts.FaceChart[static_cast<size_t>(f)];
       const int axis = charts.ChartLabel[static_cast<size_t>(chart)] / 2;
       for (int c = 0; c < 3; ++c)
       {
-        sum[static_cast<size_t>(chart)] += mesh.X(topology.BoundaryFaces(f, c), axis);
-        ++tally[static_cast<size_t>(chart)];
+        values[static_cast<size_t>(chart)].push_back(mesh.X(topology.BoundaryFaces(f, c), axis));
       }
     }
     for (size_t c = 0; c < plane.size(); ++c)
     {
-      plane[c] = tally[c] > 0 ? sum[c] / tally[c] : plane[c];
+      auto& chartValues = values[c];
+      if (!chartValues.empty())
+      {
+        auto middle = chartValues.begin() + static_cast<std::ptrdiff_t>(chartValues.size() / 2);
+        std::nth_element(chartValues.begin(), middle, chartValues.end());
+        plane[c] = *middle;
+      }
     }
   }
 
