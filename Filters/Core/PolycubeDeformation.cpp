@@ -1591,10 +1591,10 @@ Status ComputePolycube(const TetMesh& input,
     break;
   }
 
-  // On a cut mesh the planes were unknowns of the last solve: read them back.
+  // On a cut mesh the planes were unknowns of the last solve: read them back. The median, not
+  // the mean: the vertices released at the snap sit off the plane, and a mean would move it off
+  // the exact value that every other vertex of the chart shares.
   if (closedForm)
-  // The median, not the mean: the vertices released at the snap sit off the plane, and a mean
-  // would move it off the exact value that every other vertex of the chart shares.
   {
     std::vector<std::vector<double>> values(plane.size());
     for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
