@@ -402,11 +402,7 @@ std::vector<int> PolycubeEnergy::InfeasibleVertices(const double* x, double minV
   const int tetCount = static_cast<int>(this->Cells.rows());
   for (int t = 0; t < tetCount; ++t)
   {
-    const double v = TetSignedVolume(Row(x, this->Cells(t, 0)),
-      Row(x, this->Cells(t, 1)),
-      Row(x, this->Cells(t, 2)),
-      Row(x, this->Cells(t, 3)));
-    if (!(v > minVolumeRatio * this->RestVolume[static_cast<size_t>(t)]))
+    if (!(this->VolumeRatio(x, t) > minVolumeRatio))
     {
       for (int k = 0; k < 4; ++k)
       {
@@ -429,17 +425,22 @@ std::vector<int> PolycubeEnergy::InfeasibleVertices(const double* x, double minV
   return vertices;
 }
 
+double PolycubeEnergy::VolumeRatio(const double* x, int t) const
+{
+  const double v = TetSignedVolume(Row(x, this->Cells(t, 0)),
+    Row(x, this->Cells(t, 1)),
+    Row(x, this->Cells(t, 2)),
+    Row(x, this->Cells(t, 3)));
+  return v / this->RestVolume[static_cast<size_t>(t)];
+}
+
 double PolycubeEnergy::MinVolumeRatio(const double* x) const
 {
   double ratio = std::numeric_limits<double>::infinity();
   const int tetCount = static_cast<int>(this->Cells.rows());
   for (int t = 0; t < tetCount; ++t)
   {
-    const double v = TetSignedVolume(Row(x, this->Cells(t, 0)),
-      Row(x, this->Cells(t, 1)),
-      Row(x, this->Cells(t, 2)),
-      Row(x, this->Cells(t, 3)));
-    ratio = std::min(ratio, v / this->RestVolume[static_cast<size_t>(t)]);
+    ratio = std::min(ratio, this->VolumeRatio(x, t));
   }
   return ratio;
 }

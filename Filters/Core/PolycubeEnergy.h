@@ -200,6 +200,9 @@ private:
     std::array<int, 36> Pairs;     ///< block positions of (Vertices[i], Vertices[j])
   };
 
+  /// Signed volume of tet t at x over its rest volume.
+  double VolumeRatio(const double* x, int t) const;
+
   void ArapTerm(const double* x,
     double& arap,
     double& barrier,

@@ -447,16 +447,8 @@ Status PolycubeNewtonSolver::Follow(Eigen::VectorXd& x,
   {
     pushed += (rankOne * areaGradient.dot(jump)) * areaGradient;
   }
-  const SparseMatrix* hy = &this->Hessian;
-  Eigen::VectorXd gy = pushed;
-  Eigen::VectorXd ay = areaGradient;
-  if (!reduction.IsIdentity)
-  {
-    solvers.ReducedProduct.Compute(reduction.B, solvers.Bt, this->Hessian, solvers.Reduced);
-    hy = &solvers.Reduced;
-    gy = solvers.Bt * pushed;
-    ay = solvers.Bt * areaGradient;
-  }
+  Eigen::VectorXd gy, ay;
+  const SparseMatrix* hy = this->ReduceSystem(pushed, areaGradient, gy, ay);
   Eigen::VectorXd direction;
   // The factorisation of the previous Minimize call (nearly the same Hessian) serves CG here.
   const bool refactor = !settings.ReusePreconditioner || !solvers.PreconditionerFactorized;
@@ -497,6 +489,24 @@ Status PolycubeNewtonSolver::Follow(Eigen::VectorXd& x,
     }
   }
   return Status::Success();
+}
+
+const SparseMatrix* PolycubeNewtonSolver::ReduceSystem(const Eigen::VectorXd& gradient,
+  const Eigen::VectorXd& areaGradient,
+  Eigen::VectorXd& gy,
+  Eigen::VectorXd& ay)
+{
+  if (this->Reduction.IsIdentity)
+  {
+    gy = gradient;
+    ay = areaGradient;
+    return &this->Hessian;
+  }
+  Factorizations& solvers = *this->Solvers;
+  solvers.ReducedProduct.Compute(this->Reduction.B, solvers.Bt, this->Hessian, solvers.Reduced);
+  gy = solvers.Bt * gradient;
+  ay = solvers.Bt * areaGradient;
+  return &solvers.Reduced;
 }
 
 Status PolycubeNewtonSolver::SolveNewtonSystem(const SparseMatrix& hy,
@@ -617,16 +627,8 @@ Status PolycubeNewtonSolver::Minimize(Eigen::VectorXd& x,
   for (int iteration = 0; iteration < settings.MaxIterations; ++iteration)
   {
     const auto solveStart = std::chrono::steady_clock::now();
-    const SparseMatrix* hy = &this->Hessian;
-    Eigen::VectorXd gy = gradient;
-    Eigen::VectorXd ay = areaGradient;
-    if (!reduction.IsIdentity)
-    {
-      solvers.ReducedProduct.Compute(reduction.B, solvers.Bt, this->Hessian, solvers.Reduced);
-      hy = &solvers.Reduced;
-      gy = solvers.Bt * gradient;
-      ay = solvers.Bt * areaGradient;
-    }
+    Eigen::VectorXd gy, ay;
+    const SparseMatrix* hy = this->ReduceSystem(gradient, areaGradient, gy, ay);
     if (gy.lpNorm<Eigen::Infinity>() < settings.GradientTolerance)
     {
       break;

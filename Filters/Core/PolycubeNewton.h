@@ -143,6 +143,13 @@ public:
     double minVolumeRatio = 0.0);
 
 private:
+  /// The Newton system in the reduced variables: B^T H B from the current Hessian (or H itself
+  /// for the identity), and gy = B^T gradient, ay = B^T areaGradient.
+  const Eigen::SparseMatrix<double>* ReduceSystem(const Eigen::VectorXd& gradient,
+    const Eigen::VectorXd& areaGradient,
+    Eigen::VectorXd& gy,
+    Eigen::VectorXd& ay);
+
   /// Solves (hy + mu I + c a a^T) direction = rhs (mu the settings' ridge, c a a^T the area
   /// term), by LDL^T or by CG preconditioned with the axis blocks (factorised anew when
   /// `refactor`).

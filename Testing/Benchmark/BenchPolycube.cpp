@@ -57,38 +57,6 @@ int main(int argc, char* argv[])
 
   PolycubeParameters params;
   // Experiments without rebuilding: PCH_<NAME>=value overrides a few settings.
-  if (const char* value = std::getenv("PCH_NORMAL_DIFFERENCE_WEIGHT"))
-  {
-    params.NormalDifferenceWeight = std::atof(value);
-  }
-  if (const char* value = std::getenv("PCH_FLATTEN_ROUNDS"))
-  {
-    params.FlattenRounds = std::atoi(value);
-  }
-  if (const char* value = std::getenv("PCH_FLATTEN_ITERATIONS"))
-  {
-    params.FlattenIterations = std::atoi(value);
-  }
-  if (const char* value = std::getenv("PCH_FLATTEN_HOMOTOPY_STEPS"))
-  {
-    params.FlattenHomotopySteps = std::atoi(value);
-  }
-  if (const char* value = std::getenv("PCH_FLATTEN_RELAX_ITERATIONS"))
-  {
-    params.FlattenRelaxIterations = std::atoi(value);
-  }
-  if (const char* value = std::getenv("PCH_FLATTEN_FREEZE_BELOW"))
-  {
-    params.FlattenFreezeBelow = std::atof(value);
-  }
-  if (std::getenv("PCH_DIRECT"))
-  {
-    params.LinearSolver = PolycubeParameters::LinearSolverType::Direct;
-  }
-  if (const char* value = std::getenv("PCH_COLLAPSE_RELABEL_ATTEMPTS"))
-  {
-    params.CollapseRelabelAttempts = std::atoi(value);
-  }
   auto overrideDouble = [](const char* name, double& target)
   {
     if (const char* value = std::getenv(name))
@@ -103,6 +71,17 @@ int main(int argc, char* argv[])
       target = std::atoi(value);
     }
   };
+  overrideDouble("PCH_NORMAL_DIFFERENCE_WEIGHT", params.NormalDifferenceWeight);
+  overrideInt("PCH_FLATTEN_ROUNDS", params.FlattenRounds);
+  overrideInt("PCH_FLATTEN_ITERATIONS", params.FlattenIterations);
+  overrideInt("PCH_FLATTEN_HOMOTOPY_STEPS", params.FlattenHomotopySteps);
+  overrideInt("PCH_FLATTEN_RELAX_ITERATIONS", params.FlattenRelaxIterations);
+  overrideDouble("PCH_FLATTEN_FREEZE_BELOW", params.FlattenFreezeBelow);
+  if (std::getenv("PCH_DIRECT"))
+  {
+    params.LinearSolver = PolycubeParameters::LinearSolverType::Direct;
+  }
+  overrideInt("PCH_COLLAPSE_RELABEL_ATTEMPTS", params.CollapseRelabelAttempts);
   overrideDouble("PCH_ALIGNMENT_WEIGHT", params.AlignmentWeight);
   overrideDouble("PCH_ALIGNMENT_WEIGHT_GROWTH", params.AlignmentWeightGrowth);
   overrideDouble("PCH_ALIGNMENT_EPSILON", params.AlignmentEpsilon);

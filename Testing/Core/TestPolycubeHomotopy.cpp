@@ -50,6 +50,16 @@ Triangles BoundaryOf(const TetMesh& mesh)
   return topology.BoundaryFaces;
 }
 
+/// ARAP to the cube and the inversion barrier: the energy the flattening's homotopy sees.
+PolycubeEnergy BarrierEnergy(const TetMesh& cube)
+{
+  PolycubeEnergy energy(cube.Vertices, cube.Cells, BoundaryOf(cube));
+  PolycubeEnergyWeights weights;
+  weights.Barrier = 1.0;
+  energy.SetWeights(weights);
+  return energy;
+}
+
 /// The x coordinates of the cube's faces x = -1 (held) and x = 1 (moved to `movedTo`).
 void SquashAnchors(const TetMesh& cube,
   double movedTo,
@@ -69,10 +79,7 @@ void SquashAnchors(const TetMesh& cube,
 void TestSquash()
 {
   const TetMesh cube = CubeGrid(4);
-  PolycubeEnergy energy(cube.Vertices, cube.Cells, BoundaryOf(cube));
-  PolycubeEnergyWeights weights;
-  weights.Barrier = 1.0;
-  energy.SetWeights(weights);
+  const PolycubeEnergy energy = BarrierEnergy(cube);
   std::vector<int> index;
   std::vector<double> target;
   SquashAnchors(cube, -0.9, index, target);
@@ -117,10 +124,7 @@ void TestInsideOut()
   // Moving the face x = 1 past the face x = -1 cannot keep the tets positive: the homotopy gets
   // close to the opposite face and stops there, every tet still positive.
   const TetMesh cube = CubeGrid(3);
-  PolycubeEnergy energy(cube.Vertices, cube.Cells, BoundaryOf(cube));
-  PolycubeEnergyWeights weights;
-  weights.Barrier = 1.0;
-  energy.SetWeights(weights);
+  const PolycubeEnergy energy = BarrierEnergy(cube);
   std::vector<int> index;
   std::vector<double> target;
   SquashAnchors(cube, -1.5, index, target);
