@@ -282,6 +282,9 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "TurnedBackCreaseCount", result.TurnedBackCreaseCount);
   polycubehex::SetFieldValue<vtkIntArray>(fields, "ShavedFaceCount", result.ShavedFaceCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "SquashedCreaseCount", result.SquashedCreaseCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MinCreaseStretch", result.MinCreaseStretch);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
   vtkNew<vtkDoubleArray> translations; // t_c of x_plus = Pi_c x_minus + t_c; none when uncut
   translations->SetName(names::CutTranslations);

@@ -31,7 +31,10 @@
  * `MaxPlaneDeviation` (the largest distance of a chart vertex from its plane, input units),
  * `CreaseTurnBack` and `CreaseTurnBackBeforeFlattening` (how far the mesh path of a polycube
  * edge runs back along the edge's axis, the largest over the edges, input units; 0 when every
- * edge is monotone) and `TurnedBackCreaseCount` (edges turning back over 1e-3 of the diagonal).
+ * edge is monotone) and `TurnedBackCreaseCount` (edges turning back over 1e-3 of the diagonal),
+ * `MinCreaseStretch` (the smallest ratio of an edge's length along its axis to its length in the
+ * input, over edges at least 2 % of the diagonal long) and `SquashedCreaseCount` (edges below
+ * 0.25: their charts are labelled across the edge's axis, and the hexes along it are crushed).
  * Output port 1: the polycube boundary with cell arrays `PolycubeLabel`, `ChartId`.
  */
 #ifndef vtkPolycubeDeformFilter_h

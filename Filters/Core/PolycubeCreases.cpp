@@ -26,6 +26,16 @@ void MeasureCrease(const Points& x, PolycubeCrease& crease)
     std::abs(x(crease.Vertices.back(), crease.Axis) - x(crease.Vertices.front(), crease.Axis));
   crease.TurnBack = 0.5 * std::max(0.0, variation - crease.NetLength);
 }
+
+double PathLength(const Points& x, const std::vector<int>& path)
+{
+  double length = 0.0;
+  for (size_t i = 1; i < path.size(); ++i)
+  {
+    length += (x.row(path[i]) - x.row(path[i - 1])).norm();
+  }
+  return length;
+}
 } // namespace
 
 std::vector<PolycubeCrease> ComputePolycubeCreases(const Points& x,
@@ -192,6 +202,45 @@ int ShaveTurnedBackCreases(const Points& x,
     }
   }
   return relabelled;
+}
+
+double CreaseStretch(const Points& rest, const PolycubeCrease& crease)
+{
+  if (crease.Vertices.size() < 2 || crease.Vertices.front() == crease.Vertices.back())
+  {
+    return 0.0;
+  }
+  const double length = PathLength(rest, crease.Vertices);
+  return length > 0.0 ? crease.NetLength / length : 0.0;
+}
+
+int CountSquashedCreases(const Points& rest,
+  const std::vector<PolycubeCrease>& creases,
+  double maxStretch,
+  double minRestLength,
+  double* smallest)
+{
+  int count = 0;
+  double least = 1.0;
+  for (const PolycubeCrease& crease : creases)
+  {
+    if (crease.Vertices.front() == crease.Vertices.back())
+    {
+      continue; // a closed loop has no net length to compare
+    }
+    if (!(PathLength(rest, crease.Vertices) >= minRestLength))
+    {
+      continue;
+    }
+    const double stretch = CreaseStretch(rest, crease);
+    least = std::min(least, stretch);
+    count += stretch < maxStretch ? 1 : 0;
+  }
+  if (smallest)
+  {
+    *smallest = least;
+  }
+  return count;
 }
 
 double MaxCreaseTurnBack(const std::vector<PolycubeCrease>& creases,

@@ -1722,12 +1722,15 @@ Status ComputePolycube(const TetMesh& input,
     out.Warnings.push_back(message.str());
   }
   // Unit-diagonal positions: the tolerance is 1e-3 of the diagonal.
-  out.CreaseTurnBack = frame.Scale *
-    MaxCreaseTurnBack(
-      ComputePolycubeCreases(
-        mesh.X, topology.BoundaryFaces, CreaseAdjacency(mesh, topology.BoundaryFaces), charts),
-      1e-3,
-      &out.TurnedBackCreaseCount);
+  const std::vector<PolycubeCrease> creases = ComputePolycubeCreases(
+    mesh.X, topology.BoundaryFaces, CreaseAdjacency(mesh, topology.BoundaryFaces), charts);
+  out.CreaseTurnBack = frame.Scale * MaxCreaseTurnBack(creases, 1e-3, &out.TurnedBackCreaseCount);
+  // Both shapes have a unit diagonal, so the stretch compares like with like.
+  out.SquashedCreaseCount = CountSquashedCreases(mesh.Rest,
+    creases,
+    PolycubeResult::SquashedCreaseStretch,
+    PolycubeResult::SquashedCreaseMinLength,
+    &out.MinCreaseStretch);
   out.FoldedFaceCount = 0;
   for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
   {

@@ -220,6 +220,9 @@ int main(int argc, char* argv[])
     result.CreaseTurnBackBeforeFlattening,
     result.CreaseTurnBack,
     result.TurnedBackCreaseCount);
+  std::printf("squashed creases %d, smallest stretch %.3g\n",
+    result.SquashedCreaseCount,
+    result.MinCreaseStretch);
   std::printf("crease repair: %d rounds, %d faces shaved\n",
     result.MonotoneRepairRounds,
     result.ShavedFaceCount);

@@ -165,6 +165,8 @@ def run_guidance(name, tets, source, guidance, repeat):
     # the faces between the turning points fold, which is what leaves vertices off their planes.
     row["turned-back edges"] = int(fields.GetArray("TurnedBackCreaseCount").GetTuple1(0))
     row["turn-back / d"] = fields.GetArray("CreaseTurnBack").GetTuple1(0) / diagonal_of(polycube)
+    row["squashed edges"] = int(fields.GetArray("SquashedCreaseCount").GetTuple1(0))
+    row["min edge stretch"] = fields.GetArray("MinCreaseStretch").GetTuple1(0)
 
     # §4.3: hexes at the paper's hex count for this method where it has the model (l1 rows for
     # Uniform, closed-form rows for FrameField), else 10,000; smoothing off (the paper has
@@ -393,7 +395,7 @@ def main():
                "transitions"]
     hex_columns = ["model", "guidance", "tets", "polycube s", "corners", "inverted tets",
                    "residual", "off-plane vertices", "plane dev / d", "turned-back edges",
-                   "turn-back / d", "target",
+                   "turn-back / d", "squashed edges", "min edge stretch", "target",
                    "rounding inverted tets", "hexes", "SJ min/mean",
                    "dist mean/H", "inverted hexes", "valid", "hex s", "SJ min/mean smooth",
                    "dist mean/H smooth", "inverted hexes smooth", "valid smooth", "hex s smooth"]
@@ -431,7 +433,10 @@ def main():
         "model (l1: rockerarm 24,346, fertility 17,910; closed-form: kitten 11,941, rockerarm "
         "17,594, fertility 16,247), else 10,000; padding on; the same extraction without "
         "smoothing (padding placed) and with it. 'rounding inverted tets' counts tets a best-effort integer rounding left "
-        "inverted (the hexes near them may be inverted too). Distances in 1e-3 of the "
+        "inverted (the hexes near them may be inverted too). 'off-plane vertices': farther than "
+        "1e-9 of the diagonal from a chart plane. 'squashed edges': polycube edges at least 2 % "
+        "of the diagonal long in the input that keep under a quarter of that length along their "
+        "axis ('min edge stretch' the smallest such ratio; 1 for a cube). Distances in 1e-3 of the "
         "bounding-box diagonal. 'failed' / 'refused': the stage refused its input.",
         table(hex_rows, hex_columns),
         "## The closed form against the l1 baseline at equal hex counts",

@@ -3,7 +3,9 @@
 // path from corner to corner along the axis of neither of its charts; pushing one crease vertex
 // past the end of its edge makes that crease, and only that one, turn back by exactly the
 // overshoot; shaving it gives the faces of its two charts around the vertex it runs back to
-// one label, and leaves a monotone cube alone.
+// one label, and leaves a monotone cube alone. CreaseStretch: a cube's edges keep their length
+// (1); squashing the cube along z to a tenth leaves the four vertical edges at 0.1, the only
+// squashed ones.
 #include "PolycubeCharts.h"
 #include "PolycubeCreases.h"
 #include "TestAssert.h"
@@ -51,6 +53,28 @@ int main()
   }
   int above = -1;
   PCH_CHECK(MaxCreaseTurnBack(creases, 1e-9, &above) < 1e-12 && above == 0);
+
+  // Stretch: the cube against itself, then squashed along z (the charts keep their labels).
+  double smallest = 0.0;
+  PCH_CHECK(CountSquashedCreases(cube.Vertices, creases, 0.25, 0.0, &smallest) == 0);
+  PCH_CHECK(std::abs(smallest - 1.0) < 1e-12);
+  Points squashed = cube.Vertices;
+  squashed.col(2) *= 0.1;
+  const std::vector<PolycubeCrease> flat = ComputePolycubeCreases(squashed, faces, adjacency, charts);
+  PCH_CHECK(flat.size() == 12);
+  for (const PolycubeCrease& crease : flat)
+  {
+    const double expected = crease.Axis == 2 ? 0.1 : 1.0;
+    PCH_CHECK(std::abs(CreaseStretch(cube.Vertices, crease) - expected) < 1e-12);
+  }
+  const int squashedCount = CountSquashedCreases(cube.Vertices, flat, 0.25, 0.0, &smallest);
+  std::cout << "squashed creases " << squashedCount << ", smallest stretch " << smallest
+            << std::endl;
+  PCH_CHECK(squashedCount == 4);
+  PCH_CHECK(std::abs(smallest - 0.1) < 1e-12);
+  // Creases shorter in the input than the length asked for are not counted.
+  PCH_CHECK(CountSquashedCreases(cube.Vertices, flat, 0.25, 2.5, &smallest) == 0);
+  PCH_CHECK(smallest == 1.0);
 
   // The middle vertex of the crease x = y = 1 goes to z = 1.3, 0.3 past the corner at z = 1:
   // the path z = -1, 1.3, 1 runs 2.6 for a net 2, so it turns back 0.3.

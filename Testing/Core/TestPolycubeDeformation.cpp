@@ -199,6 +199,9 @@ void TestCube()
   PCH_CHECK(r.ChartCount == 6);
   PCH_CHECK(r.CornerCount == 8);
   PCH_CHECK(r.Rounds == 0); // already a polycube: not deformed
+  // Its edges keep their length along their axes.
+  PCH_CHECK(r.SquashedCreaseCount == 0);
+  PCH_CHECK_NEAR(r.MinCreaseStretch, 1.0, 1e-6);
   // The cube stays where it was (up to the symmetry the initial rotation may pick: none).
   PCH_CHECK((r.InitialRotation - Eigen::Matrix3d::Identity()).norm() < 1e-9);
   const Eigen::Index n = cube.Vertices.rows();
