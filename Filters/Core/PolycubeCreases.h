@@ -58,8 +58,8 @@ int ShaveTurnedBackCreases(const Points& x,
 /// How much of its length a crease keeps along its axis: NetLength over the length of its path
 /// in `rest` (the input). A polycube edge follows its axis, so a crease that runs across the
 /// axis in the input is squashed onto a short edge, and the tets along it with it: rockerarm's
-/// l1 polycube has one crease at 0.14 (7 edges, 7 % of the diagonal long) where every other is
-/// above 0.69, and its worst hexes, its Hausdorff distance and its vertices off their planes are
+/// l1 polycube has one crease at 0.10 (7 edges, 7 % of the diagonal long) where every other is
+/// far above, and its worst hexes, its Hausdorff distance and its vertices off their planes are
 /// all there. 1 for a cube's edges; 0 for a closed loop or a path of zero rest length.
 double CreaseStretch(const Points& rest, const PolycubeCrease& crease);
 

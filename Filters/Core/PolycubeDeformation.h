@@ -225,16 +225,17 @@ struct PolycubeResult
   double CreaseTurnBack = 0.0;
   int TurnedBackCreaseCount = 0; ///< creases of the result turning back over 1e-3 of the diagonal
   int MonotoneRepairRounds = 0;  ///< crease repair rounds run (PolycubeParameters)
+  int ShavedFaceCount = 0;       ///< faces they relabelled
   /// Creases of the result squashed along their axis (PolycubeCreases.h CreaseStretch): their
   /// length along the axis over their length in the input is below SquashedCreaseStretch,
   /// counting those at least SquashedCreaseMinLength of the diagonal long in the input; and the
-  /// smallest stretch of those (1 if none). A labelling problem the flattening cannot mend:
-  /// the hexes along such an edge are crushed and may leave the input's surface.
+  /// smallest stretch of those (1 if none). Charts labelled across the edge's axis: the
+  /// tets along such an edge are crushed, and so may be the hexes (rockerarm), though not
+  /// always (kitten's l1 polycube has one at 0.16 and rounds cleanly).
   static constexpr double SquashedCreaseStretch = 0.25;
   static constexpr double SquashedCreaseMinLength = 0.02;
   int SquashedCreaseCount = 0;
   double MinCreaseStretch = 1.0;
-  int ShavedFaceCount = 0;       ///< faces they relabelled
   /// Boundary faces folded over their label's direction when the flattening started (the
   /// optimisation leaves a few where tiny charts were merged), and at the end (0 on success:
   /// the hex extraction refuses a folded face).
