@@ -34,7 +34,8 @@
  * edge is monotone) and `TurnedBackCreaseCount` (edges turning back over 1e-3 of the diagonal),
  * `MinCreaseStretch` (the smallest ratio of an edge's length along its axis to its length in the
  * input, over edges at least 2 % of the diagonal long) and `SquashedCreaseCount` (edges below
- * 0.25: their charts are labelled across the edge's axis, and the hexes along it are crushed).
+ * 0.25: their charts are labelled across the edge's axis; the tets along it are crushed, and
+ * often the hexes too).
  * Output port 1: the polycube boundary with cell arrays `PolycubeLabel`, `ChartId`.
  */
 #ifndef vtkPolycubeDeformFilter_h
