@@ -35,6 +35,7 @@ constexpr const char* OriginalPoints = "OriginalPoints";
 constexpr const char* PolycubeLabels = "PolycubeLabels";
 constexpr const char* PolycubeLabel = "PolycubeLabel";
 constexpr const char* ChartId = "ChartId";
+constexpr const char* PolycubeDefect = "PolycubeDefect";
 constexpr const char* CutTranslations = "CutTranslations";
 constexpr const char* CornerCount = "CornerCount";
 constexpr const char* InvertedTetCount = "InvertedTetCount";

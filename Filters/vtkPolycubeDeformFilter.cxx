@@ -7,8 +7,8 @@
 #include "PolycubeHexConversion.h"
 
 #include <vtkCellArray.h>
-#include <vtkDataArray.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
@@ -316,6 +316,16 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   surface->SetPolys(triangles);
   surface->GetCellData()->AddArray(faceLabel);
   surface->GetCellData()->AddArray(chartId);
+  // Where the polycube is defective, so that the user sees where the hexes will be poor.
+  if (static_cast<vtkIdType>(result.VertexDefects.size()) == pointCount)
+  {
+    auto defects = polycubehex::NewArray<vtkIntArray>(names::PolycubeDefect, 1, pointCount);
+    for (vtkIdType v = 0; v < pointCount; ++v)
+    {
+      defects->SetValue(v, result.VertexDefects[static_cast<size_t>(v)]);
+    }
+    surface->GetPointData()->AddArray(defects);
+  }
   return 1;
 }
 

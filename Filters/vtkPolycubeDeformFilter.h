@@ -36,7 +36,10 @@
  * input, over edges at least 2 % of the diagonal long) and `SquashedCreaseCount` (edges below
  * 0.25: their charts are labelled across the edge's axis; the tets along it are crushed, and
  * often the hexes too).
- * Output port 1: the polycube boundary with cell arrays `PolycubeLabel`, `ChartId`.
+ * Output port 1: the polycube boundary with cell arrays `PolycubeLabel`, `ChartId`, and the
+ * point array `PolycubeDefect`, which shows where those counts are: bit flags, 1 off a chart
+ * plane, 2 on an edge turning back, 4 on a squashed edge; 0 where the polycube is sound (the
+ * hexes near a flagged vertex are the likeliest to be poor).
  */
 #ifndef vtkPolycubeDeformFilter_h
 #define vtkPolycubeDeformFilter_h
@@ -159,7 +162,8 @@ protected:
   ~vtkPolycubeDeformFilter() override = default;
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   int Guidance = AUTOMATIC;

@@ -163,7 +163,8 @@ int ShaveTurnedBackCreases(const Points& x,
       continue;
     }
     const double direction =
-      x(crease.Vertices.back(), crease.Axis) >= x(crease.Vertices.front(), crease.Axis) ? 1.0 : -1.0;
+      x(crease.Vertices.back(), crease.Axis) >= x(crease.Vertices.front(), crease.Axis) ? 1.0
+                                                                                        : -1.0;
     double farthest = -std::numeric_limits<double>::infinity();
     std::vector<int> around; // faces of the two charts at the vertices behind
     for (int v : crease.Vertices)
@@ -214,6 +215,29 @@ double CreaseStretch(const Points& rest, const PolycubeCrease& crease)
   return length > 0.0 ? crease.NetLength / length : 0.0;
 }
 
+bool IsSquashedCrease(const Points& rest,
+  const PolycubeCrease& crease,
+  double maxStretch,
+  double minRestLength,
+  double* stretch)
+{
+  if (crease.Vertices.size() < 2 || crease.Vertices.front() == crease.Vertices.back())
+  {
+    return false; // a closed loop has no net length to compare
+  }
+  const double length = PathLength(rest, crease.Vertices);
+  if (!(length >= minRestLength) || !(length > 0.0))
+  {
+    return false;
+  }
+  const double ratio = crease.NetLength / length;
+  if (stretch)
+  {
+    *stretch = ratio;
+  }
+  return ratio < maxStretch;
+}
+
 int CountSquashedCreases(const Points& rest,
   const std::vector<PolycubeCrease>& creases,
   double maxStretch,
@@ -224,17 +248,9 @@ int CountSquashedCreases(const Points& rest,
   double least = 1.0;
   for (const PolycubeCrease& crease : creases)
   {
-    if (crease.Vertices.front() == crease.Vertices.back())
-    {
-      continue; // a closed loop has no net length to compare
-    }
-    if (!(PathLength(rest, crease.Vertices) >= minRestLength))
-    {
-      continue;
-    }
-    const double stretch = CreaseStretch(rest, crease);
+    double stretch = 1.0;
+    count += IsSquashedCrease(rest, crease, maxStretch, minRestLength, &stretch) ? 1 : 0;
     least = std::min(least, stretch);
-    count += stretch < maxStretch ? 1 : 0;
   }
   if (smallest)
   {

@@ -63,6 +63,15 @@ int ShaveTurnedBackCreases(const Points& x,
 /// all there. 1 for a cube's edges; 0 for a closed loop or a path of zero rest length.
 double CreaseStretch(const Points& rest, const PolycubeCrease& crease);
 
+/// Whether `crease` is squashed: an open path at least `minRestLength` long in `rest` whose
+/// stretch is below `maxStretch`. Its stretch goes to `stretch` when the path is long enough
+/// (left as it is otherwise).
+bool IsSquashedCrease(const Points& rest,
+  const PolycubeCrease& crease,
+  double maxStretch,
+  double minRestLength,
+  double* stretch = nullptr);
+
 /// Creases at least `minRestLength` long in `rest` whose stretch is below `maxStretch`; the
 /// smallest stretch of those long enough (1 if none) in `smallest`.
 int CountSquashedCreases(const Points& rest,

@@ -1731,6 +1731,25 @@ Status ComputePolycube(const TetMesh& input,
     PolycubeResult::SquashedCreaseStretch,
     PolycubeResult::SquashedCreaseMinLength,
     &out.MinCreaseStretch);
+  out.VertexDefects.assign(static_cast<size_t>(out.Positions.rows()), 0);
+  for (size_t v = 0; v < offPlane.size(); ++v)
+  {
+    out.VertexDefects[v] = offPlane[v] ? PolycubeVertexDefect::OffChartPlane : 0;
+  }
+  for (const PolycubeCrease& crease : creases)
+  {
+    const int flags = (crease.TurnBack > 1e-3 ? PolycubeVertexDefect::OnTurnedBackCrease : 0) |
+      (IsSquashedCrease(mesh.Rest,
+         crease,
+         PolycubeResult::SquashedCreaseStretch,
+         PolycubeResult::SquashedCreaseMinLength)
+          ? PolycubeVertexDefect::OnSquashedCrease
+          : 0);
+    for (int v : crease.Vertices)
+    {
+      out.VertexDefects[static_cast<size_t>(v)] |= flags;
+    }
+  }
   out.FoldedFaceCount = 0;
   for (Eigen::Index f = 0; f < topology.BoundaryFaces.rows(); ++f)
   {

@@ -172,6 +172,15 @@ struct PolycubeRound
   double Seconds = 0.0;
 };
 
+/// Where a polycube is defective, per vertex: bit flags of PolycubeResult::VertexDefects, so
+/// that a user can see where its hexes will be poor (the field counts only say how many).
+enum PolycubeVertexDefect : int
+{
+  OffChartPlane = 1,      ///< farther than 1e-9 of the diagonal from one of its chart planes
+  OnTurnedBackCrease = 2, ///< on a crease that turns back over 1e-3 of the diagonal
+  OnSquashedCrease = 4    ///< on a squashed crease (SquashedCreaseStretch)
+};
+
 /// Output of ComputePolycube, on the mesh after the splits.
 struct PolycubeResult
 {
@@ -236,6 +245,9 @@ struct PolycubeResult
   static constexpr double SquashedCreaseMinLength = 0.02;
   int SquashedCreaseCount = 0;
   double MinCreaseStretch = 1.0;
+  /// #V': PolycubeVertexDefect flags of each vertex (0 where the polycube is sound), the
+  /// vertices counted by UnflattenedVertexCount, TurnedBackCreaseCount and SquashedCreaseCount.
+  std::vector<int> VertexDefects;
   /// Boundary faces folded over their label's direction when the flattening started (the
   /// optimisation leaves a few where tiny charts were merged), and at the end (0 on success:
   /// the hex extraction refuses a folded face).

@@ -33,8 +33,8 @@ int main()
   ComputeTetTopology(static_cast<int>(cube.Vertices.rows()), cube.Cells, topology);
   const Triangles& faces = topology.BoundaryFaces;
   const Triangles adjacency = ComputeFaceAdjacency(static_cast<int>(cube.Vertices.rows()), faces);
-  const PolycubeCharts charts =
-    ComputePolycubeCharts(cube.Vertices, faces, adjacency, PolycubeFaceLabels(cube.Vertices, faces));
+  const PolycubeCharts charts = ComputePolycubeCharts(
+    cube.Vertices, faces, adjacency, PolycubeFaceLabels(cube.Vertices, faces));
   PCH_CHECK(charts.Count() == 6);
 
   const std::vector<PolycubeCrease> creases =
@@ -60,7 +60,8 @@ int main()
   PCH_CHECK(std::abs(smallest - 1.0) < 1e-12);
   Points squashed = cube.Vertices;
   squashed.col(2) *= 0.1;
-  const std::vector<PolycubeCrease> flat = ComputePolycubeCreases(squashed, faces, adjacency, charts);
+  const std::vector<PolycubeCrease> flat =
+    ComputePolycubeCreases(squashed, faces, adjacency, charts);
   PCH_CHECK(flat.size() == 12);
   for (const PolycubeCrease& crease : flat)
   {
@@ -75,6 +76,22 @@ int main()
   // Creases shorter in the input than the length asked for are not counted.
   PCH_CHECK(CountSquashedCreases(cube.Vertices, flat, 0.25, 2.5, &smallest) == 0);
   PCH_CHECK(smallest == 1.0);
+  // One crease at a time: the four along z are squashed, at 0.1, and only while long enough.
+  int flagged = 0;
+  for (const PolycubeCrease& crease : flat)
+  {
+    double stretch = -1.0;
+    const bool isSquashed = IsSquashedCrease(cube.Vertices, crease, 0.25, 0.0, &stretch);
+    PCH_CHECK(isSquashed == (crease.Axis == 2));
+    PCH_CHECK(std::abs(stretch - (crease.Axis == 2 ? 0.1 : 1.0)) < 1e-12);
+    PCH_CHECK(!IsSquashedCrease(cube.Vertices, crease, 0.25, 2.5));
+    flagged += isSquashed ? 1 : 0;
+  }
+  PCH_CHECK(flagged == 4);
+  // A closed path has no net length to compare: never squashed.
+  PolycubeCrease loop = flat.front();
+  loop.Vertices.push_back(loop.Vertices.front());
+  PCH_CHECK(!IsSquashedCrease(cube.Vertices, loop, 0.25, 0.0));
 
   // The middle vertex of the crease x = y = 1 goes to z = 1.3, 0.3 past the corner at z = 1:
   // the path z = -1, 1.3, 1 runs 2.6 for a net 2, so it turns back 0.3.

@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -202,6 +203,10 @@ void TestCube()
   // Its edges keep their length along their axes.
   PCH_CHECK(r.SquashedCreaseCount == 0);
   PCH_CHECK_NEAR(r.MinCreaseStretch, 1.0, 1e-6);
+  // ... and no vertex is flagged as defective.
+  PCH_CHECK(static_cast<Eigen::Index>(r.VertexDefects.size()) == r.Positions.rows());
+  PCH_CHECK(
+    std::all_of(r.VertexDefects.begin(), r.VertexDefects.end(), [](int f) { return f == 0; }));
   // The cube stays where it was (up to the symmetry the initial rotation may pick: none).
   PCH_CHECK((r.InitialRotation - Eigen::Matrix3d::Identity()).norm() < 1e-9);
   const Eigen::Index n = cube.Vertices.rows();

@@ -4,6 +4,8 @@
 // Table 1: 88), charts on their planes. Prints the timing (the acceptance target is 25 s).
 // Then the closed form (cuts, frame field, polycube on the cut mesh): its charts' planes are
 // read back from the positions, and only the vertices the snap released may be off them.
+// Both: the per-vertex defect flags agree with the counts (rockerarm's l1 polycube has vertices
+// off their planes and a squashed edge, so the flags are exercised).
 #include "ClosedFormStages.h"
 #include "MeditFormat.h"
 #include "PolycubeDeformation.h"
@@ -13,6 +15,36 @@
 #include <string>
 
 using namespace polycubehex;
+
+namespace
+{
+/// The flags of `r.VertexDefects` must say where its counts are: exactly the off-plane vertices
+/// carry the off-plane flag, and a crease flag is set where (and only where) such creases exist.
+void CheckDefectFlags(const PolycubeResult& r, const char* what)
+{
+  PCH_CHECK(static_cast<Eigen::Index>(r.VertexDefects.size()) == r.Positions.rows());
+  int offPlane = 0;
+  int turnedBack = 0;
+  int squashed = 0;
+  for (int flags : r.VertexDefects)
+  {
+    PCH_CHECK(flags >= 0 && flags < 8);
+    offPlane += (flags & PolycubeVertexDefect::OffChartPlane) ? 1 : 0;
+    turnedBack += (flags & PolycubeVertexDefect::OnTurnedBackCrease) ? 1 : 0;
+    squashed += (flags & PolycubeVertexDefect::OnSquashedCrease) ? 1 : 0;
+  }
+  std::cout << what << ": flagged vertices off-plane " << offPlane << ", on turned-back edges "
+            << turnedBack << ", on squashed edges " << squashed
+            << " (counts: " << r.UnflattenedVertexCount << " off-plane, " << r.TurnedBackCreaseCount
+            << " turned-back edges, " << r.SquashedCreaseCount << " squashed edges)" << std::endl;
+  PCH_CHECK(offPlane == r.UnflattenedVertexCount);
+  // An edge has at least two vertices.
+  PCH_CHECK((turnedBack >= 2) == (r.TurnedBackCreaseCount > 0));
+  PCH_CHECK((squashed >= 2) == (r.SquashedCreaseCount > 0));
+  PCH_CHECK(turnedBack == 0 || r.TurnedBackCreaseCount > 0);
+  PCH_CHECK(squashed == 0 || r.SquashedCreaseCount > 0);
+}
+} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -60,6 +92,7 @@ int main(int argc, char* argv[])
   PCH_CHECK(r.MaxPlaneDeviation < 1e-6 * diagonal);
   PCH_CHECK(r.UnflattenedVertexCount < r.Positions.rows() / 100);
   PCH_CHECK(r.UnflattenedVertexCount <= r.ReleasedVertexCount);
+  CheckDefectFlags(r, "rockerarm");
 
   PolycubeCuts cuts;
   PolycubeResult closed;
@@ -73,5 +106,6 @@ int main(int argc, char* argv[])
   // chart shares whenever a vertex was released: 182 vertices counted off, 10 released.
   PCH_CHECK(closed.UnflattenedVertexCount <= closed.ReleasedVertexCount);
   PCH_CHECK(closed.UnflattenedVertexCount < closed.Positions.rows() / 100);
+  CheckDefectFlags(closed, "rockerarm, closed form");
   return PCH_TEST_RESULT();
 }

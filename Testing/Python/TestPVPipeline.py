@@ -17,8 +17,7 @@ data = os.environ["POLYCUBEHEX_DATA"]
 def field(proxy, name, port=0):
     """A field-data value of `proxy`'s output, fetched to the client."""
     from paraview import servermanager
-    output = servermanager.Fetch(proxy, port) if port == 0 else servermanager.Fetch(
-        simple.OutputPort(proxy, port))
+    output = servermanager.Fetch(proxy, idx=port)
     array = output.GetFieldData().GetAbstractArray(name)
     assert array is not None, "%s has no field array %s" % (proxy.GetXMLLabel(), name)
     return array.GetVariantValue(0).ToDouble()
@@ -49,6 +48,20 @@ assert field(hexes, "InvertedHexCount") == 0
 assert field(hexes, "ScaledJacobianMin") > 0
 # The field data of every stage reaches the hex mesh (DESIGN.md section 2).
 assert field(hexes, "BettiNumber") == 0
+# The labelled surface (port 1) says where the polycube is defective, per point, in agreement
+# with the counts: bit 1 off a chart plane, 2 on an edge turning back, 4 on a squashed edge.
+from paraview import servermanager  # noqa: E402
+
+labelled = servermanager.Fetch(polycube, idx=1)
+defects = labelled.GetPointData().GetArray("PolycubeDefect")
+assert defects is not None and defects.GetNumberOfTuples() == labelled.GetNumberOfPoints()
+flags = [int(defects.GetValue(i)) for i in range(defects.GetNumberOfTuples())]
+assert all(0 <= f < 8 for f in flags)
+assert sum(1 for f in flags if f & 1) == field(polycube, "UnflattenedVertexCount")
+assert (sum(1 for f in flags if f & 2) > 0) == (field(polycube, "TurnedBackCreaseCount") > 0)
+assert (sum(1 for f in flags if f & 4) > 0) == (field(polycube, "SquashedCreaseCount") > 0)
+print("sphere: %d of %d surface points flagged defective" % (
+    sum(1 for f in flags if f), len(flags)))
 
 # The one-call glyph helper shows three arrow sets, one per frame axis (needs X: CTest runs
 # under xvfb-run).
@@ -60,8 +73,6 @@ for glyph in glyphs:
     assert glyph.GetDataInformation().GetNumberOfPoints() > 0
 
 # FrameField guidance: the l1 stage starts from the fit of the frame field (eq. 7).
-from paraview import servermanager  # noqa: E402
-
 polycube.Guidance = "FrameField"
 polycube.UpdatePipeline()
 guided = servermanager.Fetch(polycube)
