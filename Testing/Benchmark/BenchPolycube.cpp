@@ -11,6 +11,9 @@
 //   PCH_MONOTONE_REPAIR_ROUNDS=n, PCH_MONOTONE_REPAIR_TOLERANCE=t, PCH_MONOTONE_REPAIR_ITERATIONS=k
 //                                       (override the crease repair's parameters)
 //
+// It also prints where the polycube is defective: the flagged vertices (PolycubeDefect) in
+// groups, with their flags and their centre in the input.
+//
 // With an output path, the polycube of the last run is written as MEDIT (tets and boundary
 // triangles).
 #include "FrameField.h"
@@ -29,6 +32,77 @@ using namespace polycubehex;
 
 namespace
 {
+/// Where the polycube is defective: the flagged vertices (PolycubeResult::VertexDefects) in
+/// groups joined through boundary triangles, largest first, each with its flags, its size and
+/// its centre at the input positions, so that one knows where to look.
+void PrintDefectClusters(const PolycubeResult& result)
+{
+  const size_t vertexCount = result.VertexDefects.size();
+  std::vector<int> parent(vertexCount);
+  for (size_t v = 0; v < vertexCount; ++v)
+  {
+    parent[v] = static_cast<int>(v);
+  }
+  auto find = [&parent](int v)
+  {
+    while (parent[static_cast<size_t>(v)] != v)
+    {
+      v = parent[static_cast<size_t>(v)] =
+        parent[static_cast<size_t>(parent[static_cast<size_t>(v)])];
+    }
+    return v;
+  };
+  for (Eigen::Index f = 0; f < result.BoundaryFaces.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = result.BoundaryFaces(f, k);
+      const int b = result.BoundaryFaces(f, (k + 1) % 3);
+      if (result.VertexDefects[static_cast<size_t>(a)] &&
+        result.VertexDefects[static_cast<size_t>(b)])
+      {
+        parent[static_cast<size_t>(find(a))] = find(b);
+      }
+    }
+  }
+  struct Cluster
+  {
+    int Count = 0;
+    int Flags = 0;
+    Eigen::RowVector3d Sum = Eigen::RowVector3d::Zero();
+  };
+  std::vector<Cluster> clusters(vertexCount);
+  for (size_t v = 0; v < vertexCount; ++v)
+  {
+    if (result.VertexDefects[v])
+    {
+      Cluster& cluster = clusters[static_cast<size_t>(find(static_cast<int>(v)))];
+      ++cluster.Count;
+      cluster.Flags |= result.VertexDefects[v];
+      cluster.Sum += result.OriginalPoints.row(static_cast<Eigen::Index>(v));
+    }
+  }
+  clusters.erase(
+    std::remove_if(clusters.begin(), clusters.end(), [](const Cluster& c) { return c.Count == 0; }),
+    clusters.end());
+  std::sort(clusters.begin(),
+    clusters.end(),
+    [](const Cluster& a, const Cluster& b) { return a.Count > b.Count; });
+  std::printf(
+    "defective vertices in %zu groups (flags: 1 off-plane, 2 turned-back edge, 4 squashed edge)\n",
+    clusters.size());
+  for (size_t c = 0; c < std::min<size_t>(clusters.size(), 10); ++c)
+  {
+    const Eigen::RowVector3d centre = clusters[c].Sum / clusters[c].Count;
+    std::printf("  %4d vertices, flags %d, centre in the input (%.4g, %.4g, %.4g)\n",
+      clusters[c].Count,
+      clusters[c].Flags,
+      centre[0],
+      centre[1],
+      centre[2]);
+  }
+}
+
 double Median(std::vector<double> values)
 {
   std::sort(values.begin(), values.end());
@@ -229,6 +303,7 @@ int main(int argc, char* argv[])
   std::printf("faces relabelled: %d by the clean-up, %d because the flattening collapsed them\n",
     result.RelabelledFaceCount,
     result.CollapseRelabelledFaceCount);
+  PrintDefectClusters(result);
   if (std::getenv("PCH_ROUNDS"))
   {
     std::printf("round  weight     eps     barrier residual  minvol    arap      it  cg  infeas "
