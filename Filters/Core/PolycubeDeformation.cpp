@@ -1722,9 +1722,11 @@ Status ComputePolycube(const TetMesh& input,
     out.Warnings.push_back(message.str());
   }
   // Unit-diagonal positions: the tolerance is 1e-3 of the diagonal.
+  constexpr double TurnBackTolerance = 1e-3;
   const std::vector<PolycubeCrease> creases = ComputePolycubeCreases(
     mesh.X, topology.BoundaryFaces, CreaseAdjacency(mesh, topology.BoundaryFaces), charts);
-  out.CreaseTurnBack = frame.Scale * MaxCreaseTurnBack(creases, 1e-3, &out.TurnedBackCreaseCount);
+  out.CreaseTurnBack =
+    frame.Scale * MaxCreaseTurnBack(creases, TurnBackTolerance, &out.TurnedBackCreaseCount);
   // Both shapes have a unit diagonal, so the stretch compares like with like.
   out.SquashedCreaseCount = CountSquashedCreases(mesh.Rest,
     creases,
@@ -1738,7 +1740,8 @@ Status ComputePolycube(const TetMesh& input,
   }
   for (const PolycubeCrease& crease : creases)
   {
-    const int flags = (crease.TurnBack > 1e-3 ? PolycubeVertexDefect::OnTurnedBackCrease : 0) |
+    const int flags =
+      (crease.TurnBack > TurnBackTolerance ? PolycubeVertexDefect::OnTurnedBackCrease : 0) |
       (IsSquashedCrease(mesh.Rest,
          crease,
          PolycubeResult::SquashedCreaseStretch,
