@@ -137,9 +137,9 @@ vtkSmartPointer<vtkUnstructuredGrid> OriginalTets(const polycubehex::PolycubeTet
   std::vector<Eigen::RowVector3d> points;
   for (Eigen::Index v = 0; v < mesh.OriginalVertices.rows(); ++v)
   {
-    const std::array<double, 3> key = { mesh.OriginalVertices(v, 0),
-      mesh.OriginalVertices(v, 1),
-      mesh.OriginalVertices(v, 2) };
+    const std::array<double, 3> key = {
+      mesh.OriginalVertices(v, 0), mesh.OriginalVertices(v, 1), mesh.OriginalVertices(v, 2)
+    };
     const auto found = merged.emplace(key, static_cast<int>(points.size()));
     if (found.second)
     {
@@ -215,6 +215,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.SoftFeatureAngle = this->SoftFeatureAngle;
   params.Polish = this->Polish;
   params.PolishReleaseAngle = this->PolishReleaseAngle;
+  params.PolishSharpEdgeAngle = this->PolishSharpEdgeAngle;
   params.MeanSearchSweeps = this->MeanSearchSweeps;
   auto progress = [this](double fraction)
   {
@@ -277,9 +278,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     {
       for (int a = 0; a < 3; ++a)
       {
-        integerTranslations->SetComponent(static_cast<vtkIdType>(c),
-          a,
-          std::round(result.IntegerCutTranslations[c][a]));
+        integerTranslations->SetComponent(
+          static_cast<vtkIdType>(c), a, std::round(result.IntegerCutTranslations[c][a]));
       }
     }
     fields->AddArray(integerTranslations);
@@ -355,6 +355,7 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SoftFeatureAngle: " << this->SoftFeatureAngle << "\n";
   os << indent << "Polish: " << (this->Polish ? "On" : "Off") << "\n";
   os << indent << "PolishReleaseAngle: " << this->PolishReleaseAngle << "\n";
+  os << indent << "PolishSharpEdgeAngle: " << this->PolishSharpEdgeAngle << "\n";
   os << indent << "MeanSearchSweeps: " << this->MeanSearchSweeps << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";

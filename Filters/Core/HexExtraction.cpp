@@ -19,9 +19,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <memory>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 namespace polycubehex
@@ -284,8 +284,8 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     // the smoothing's adjacency), measured within a factor of two on rockerarm.
     const double s = result.LatticeScale;
     const double hexes = polycubeVolume * s * s * s + (params.Padding ? polycubeArea * s * s : 0.0);
-    if (!(status = CheckMemoryEstimate("hex extraction of about " +
-              std::to_string(static_cast<long long>(hexes)) + " hexes",
+    if (!(status = CheckMemoryEstimate(
+            "hex extraction of about " + std::to_string(static_cast<long long>(hexes)) + " hexes",
             2048.0 * hexes,
             "lower TargetHexCount or raise TargetEdgeLength")))
     {
@@ -425,7 +425,8 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   //    sides and kept once).
   start = std::chrono::steady_clock::now();
   LatticeHexMesh lattice;
-  status = extractLatticeHexes(original,
+  status = extractLatticeHexes(
+    original,
     rounded.Positions,
     cells,
     charts,
@@ -566,6 +567,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         smoothing.PolishPasses = 0;
       }
       smoothing.PolishReleaseAngle = params.PolishReleaseAngle;
+      smoothing.PolishSharpEdgeAngle = params.PolishSharpEdgeAngle;
       smoothing.MeanSearchSweeps = params.MeanSearchSweeps;
       HexSmoothingResult smoothed;
       status = smoothHexMesh(mesh,

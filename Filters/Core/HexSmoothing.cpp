@@ -53,9 +53,7 @@ bool RunSweeps(HexVertexMoves& moves,
   // interior hexes so).
   double floor = moves.Quality().minCoeff();
   auto smoother = [&floor](const Local& a, const Local& b)
-  {
-    return a.Mean > b.Mean + 1e-9 && a.Min >= std::min(b.Min, floor) && a.Inverted <= b.Inverted;
-  };
+  { return a.Mean > b.Mean + 1e-9 && a.Min >= std::min(b.Min, floor) && a.Inverted <= b.Inverted; };
   for (int sweep = 0; sweep < sweeps; ++sweep)
   {
     if (!report(static_cast<double>(sweep) / sweeps))
@@ -332,8 +330,8 @@ bool ClimbTogether(HexVertexMoves& moves,
 }
 
 /// Releases onto the surface the corners and curve vertices of the hexes within
-/// PolishReleaseBand of `lowest` where the input is smooth within PolishReleaseAngle about them;
-/// returns how many.
+/// PolishReleaseBand of `lowest` where the input is smooth within PolishReleaseAngle about them
+/// or has no edge sharper than PolishSharpEdgeAngle near them; returns how many.
 int ReleaseSoftCorners(HexVertexMoves& moves,
   HexSurfaceProjection& projection,
   double lowest,
@@ -354,7 +352,9 @@ int ReleaseSoftCorners(HexVertexMoves& moves,
       const HexVertexKind kind = moves.Kind(v);
       const Eigen::Vector3d p = mesh.Vertices.row(v).transpose();
       if ((kind == HexVertexKind::Fixed || kind == HexVertexKind::Feature) &&
-        projection.SmoothAt(v, p, params.PolishReleaseAngle) && projection.Release(v, p))
+        (projection.SmoothAt(v, p, params.PolishReleaseAngle) ||
+          projection.FreeOfSharpEdgesAt(v, p, params.PolishSharpEdgeAngle)) &&
+        projection.Release(v, p))
       {
         ++released;
       }
@@ -477,32 +477,28 @@ Status smoothHexMesh(HexMesh& mesh,
   // interleaved from the first sweep they took 1.5 s more on rockerarm's closed form for the
   // same mean, and slowed a jiggled lattice's way back to cubes); the polish of the worst hexes;
   // a few sweeps, which take back for the mean what the polish's moves cost it, the new minimum
-  // as their floor; the polish once more. With PolishReleaseAngle, the same polish, sweeps,
+  // as their floor; the polish once more. With PolishReleaseAngle (or PolishSharpEdgeAngle),
+  // the same polish, sweeps,
   // polish again, now releasing corners and curve vertices of the worst hexes: after the
   // others, so that the minimum ends no lower than without the release (releasing from the
   // start took other paths, some lower: kitten Uniform 0.479 -> 0.341). On the progress bar
   // each polish counts as PolishProgressShare sweeps.
   const bool polish = params.PolishPasses > 0;
-  const int rounds = polish ? (params.PolishReleaseAngle > 0.0 ? 2 : 1) : 0;
+  const bool release = params.PolishReleaseAngle > 0.0 || params.PolishSharpEdgeAngle > 0.0;
+  const int rounds = polish ? (release ? 2 : 1) : 0;
   const int sweepsAfter = polish ? std::max(0, params.SweepsAfterPolish) : 0;
   constexpr double PolishProgressShare = 3.0;
   const double polishShare = polish ? PolishProgressShare : 0.0;
   const int meanSweeps = params.MeanSearchStep > 0.0 ? std::max(0, params.MeanSearchSweeps) : 0;
   const double meanStep = meanSweeps > 0 ? params.MeanSearchStep : 0.0;
-  const double total =
-    params.Iterations + meanSweeps + rounds * (sweepsAfter + 2.0 * polishShare);
+  const double total = params.Iterations + meanSweeps + rounds * (sweepsAfter + 2.0 * polishShare);
   auto stage = [&](double begin, double length)
   {
     return [&progress, begin, length, total](double p)
     { return ReportProgress(progress, (begin + p * length) / total); };
   };
   if (!RunSweeps(moves, params.Iterations, 0.0, params, result, stage(0.0, params.Iterations)) ||
-    !RunSweeps(moves,
-      meanSweeps,
-      meanStep,
-      params,
-      result,
-      stage(params.Iterations, meanSweeps)))
+    !RunSweeps(moves, meanSweeps, meanStep, params, result, stage(params.Iterations, meanSweeps)))
   {
     return Status::Failure("hex smoothing aborted");
   }
@@ -510,15 +506,10 @@ Status smoothHexMesh(HexMesh& mesh,
   for (int round = 0; round < rounds; ++round)
   {
     HexSurfaceProjection* releaseOnto = round > 0 ? &projection : nullptr;
-    const double begin =
-      params.Iterations + meanSweeps + round * (sweepsAfter + 2.0 * polishShare);
+    const double begin = params.Iterations + meanSweeps + round * (sweepsAfter + 2.0 * polishShare);
     if (!Polish(moves, releaseOnto, params, result, stage(begin, polishShare)) ||
-      !RunSweeps(moves,
-        sweepsAfter,
-        meanStep,
-        params,
-        result,
-        stage(begin + polishShare, sweepsAfter)) ||
+      !RunSweeps(
+        moves, sweepsAfter, meanStep, params, result, stage(begin + polishShare, sweepsAfter)) ||
       !Polish(
         moves, releaseOnto, params, result, stage(begin + polishShare + sweepsAfter, polishShare)))
     {

@@ -82,6 +82,11 @@ struct HexSmoothingParameters
   double PolishReleaseAngle = 40.0;
   /// See PolishReleaseAngle (default 0.01).
   double PolishReleaseBand = 0.01;
+  /// Those vertices are also released, whatever the spread of the normals about them, where no
+  /// edge of the input within a hex edge is sharper than this many degrees (the normals of its
+  /// two triangles further apart; HexSurfaceProjection::FreeOfSharpEdgesAt): a tight curve of a
+  /// coarse surface is not a feature. 0 (the default) turns this off.
+  double PolishSharpEdgeAngle = 0.0;
 };
 
 /// Quality before and after.

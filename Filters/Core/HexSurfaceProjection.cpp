@@ -275,6 +275,23 @@ HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
       edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(f);
     }
   }
+  // How sharp the input is at each triangle's edges.
+  this->EdgeCosine.assign(static_cast<size_t>(faceCount), { 1.0, 1.0, 1.0 });
+  for (int f = 0; f < faceCount; ++f)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const int a = surface.Faces(f, e);
+      const int b = surface.Faces(f, (e + 1) % 3);
+      const std::vector<int>& both = edgeFaces[{ std::min(a, b), std::max(a, b) }];
+      if (both.size() == 2)
+      {
+        this->EdgeCosine[static_cast<size_t>(f)][static_cast<size_t>(e)] =
+          this->FaceNormal[static_cast<size_t>(both[0])].dot(
+            this->FaceNormal[static_cast<size_t>(both[1])]);
+      }
+    }
+  }
   // The segments of each feature curve (chart pair).
   for (const auto& entry : edgeFaces)
   {
@@ -385,6 +402,45 @@ bool HexSurfaceProjection::SmoothAt(int v, const Eigen::Vector3d& p, double angl
   return this->Grid && angle > 0.0 &&
     this->Smooth(
       p, this->Charts(v), this->CellSize, std::cos(angle * 3.14159265358979323846 / 180.0));
+}
+
+bool HexSurfaceProjection::FreeOfSharpEdgesAt(int v, const Eigen::Vector3d& p, double angle) const
+{
+  if (!this->Grid || !(angle > 0.0))
+  {
+    return false;
+  }
+  const HexSmoothingSurface& surface = this->Surface;
+  const std::vector<int>& charts = this->Charts(v);
+  const double cosine = std::cos(angle * 3.14159265358979323846 / 180.0);
+  bool seen = false;
+  bool sharp = false;
+  // The grid's cells are at least a hex edge wide, so one ring holds every triangle within it.
+  this->Grid->Visit(p,
+    1,
+    -1,
+    [&](int f)
+    {
+      if (sharp || std::find(charts.begin(), charts.end(), surface.FaceChart[f]) == charts.end() ||
+        (ClosestPointOnTriangle(p,
+           surface.Vertices.row(surface.Faces(f, 0)).transpose(),
+           surface.Vertices.row(surface.Faces(f, 1)).transpose(),
+           surface.Vertices.row(surface.Faces(f, 2)).transpose()) -
+          p)
+            .norm() > this->CellSize)
+      {
+        return;
+      }
+      seen = true;
+      for (int e = 0; e < 3 && !sharp; ++e)
+      {
+        const Eigen::Vector3d a = surface.Vertices.row(surface.Faces(f, e)).transpose();
+        const Eigen::Vector3d b = surface.Vertices.row(surface.Faces(f, (e + 1) % 3)).transpose();
+        sharp = this->EdgeCosine[static_cast<size_t>(f)][static_cast<size_t>(e)] < cosine &&
+          (ClosestPointOnSegment(p, a, b) - p).norm() <= this->CellSize;
+      }
+    });
+  return seen && !sharp;
 }
 
 bool HexSurfaceProjection::Release(int v, const Eigen::Vector3d& p)

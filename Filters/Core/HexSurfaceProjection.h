@@ -110,6 +110,11 @@ public:
   /// Whether the input's normals within one hex edge of p, over v's charts, differ by at most
   /// `angle` degrees from their mean (the test that releases soft vertices at construction).
   bool SmoothAt(int v, const Eigen::Vector3d& p, double angle) const;
+  /// Whether no edge of the input within one hex edge of p, on v's charts' triangles, is sharp:
+  /// the normals of its two triangles differ by more than `angle` degrees. A curved part of a
+  /// coarse surface turns a lot within a hex edge without a sharp edge (rockerarm: normals 50
+  /// to 60 degrees apart, edges at most 36), where a box's edge is one sharp edge (90).
+  bool FreeOfSharpEdgesAt(int v, const Eigen::Vector3d& p, double angle) const;
 
   /// The closest point to p where vertex v may be (p itself for interior and fixed vertices).
   /// @param direction  if set, receives the unit normal of the closest triangle (Surface) or the
@@ -135,6 +140,9 @@ private:
   std::unique_ptr<TriangleGrid> Grid;
   int Released = 0;
   std::vector<Eigen::Vector3d> FaceNormal; ///< #F unit normals
+  /// #F: per edge e (from corner e to e + 1), the cosine between the normals of its two
+  /// triangles (1 on a border).
+  std::vector<std::array<double, 3>> EdgeCosine;
   /// #F bounding boxes: a triangle whose box is farther than the nearest one found so far
   /// cannot be nearer, and is skipped without computing its closest point.
   std::vector<Eigen::AlignedBox3d> FaceBox;

@@ -5,7 +5,7 @@ can be tuned in seconds instead of re-running the cuts, frames and deformation e
 
     PYTHONPATH=build/lib/python3/dist-packages python3.11 Testing/Benchmark/hex_stage.py \
         ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--no-padding-placement] [--map-smoothing] [--soft-feature-angle 20] [--no-polish] [--mean-search-sweeps 3] \
-        [--normal-difference-weight 1] [--homotopy-steps 40] [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
+        [--polish-sharp-edge-angle 60] [--normal-difference-weight 1] [--homotopy-steps 40] [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
 
 The first run writes <cache>/<model>_<guidance>.vtu (the deformation's port 0, its field data
 included); later runs read it. Prints the hex stage's seconds per step and its quality fields,
@@ -71,6 +71,7 @@ def main():
     parser.add_argument("--soft-feature-angle", type=float, default=None)
     parser.add_argument("--no-polish", action="store_true")
     parser.add_argument("--polish-release-angle", type=float, default=None)
+    parser.add_argument("--polish-sharp-edge-angle", type=float, default=None)
     parser.add_argument("--mean-search-sweeps", type=int, default=None)
     parser.add_argument("--normal-difference-weight", type=float, default=None,
                         help="the deformation's NormalDifferenceWeight (cached apart)")
@@ -92,6 +93,8 @@ def main():
     extract.SetPolish(0 if args.no_polish else 1)
     if args.polish_release_angle is not None:
         extract.SetPolishReleaseAngle(args.polish_release_angle)
+    if args.polish_sharp_edge_angle is not None:
+        extract.SetPolishSharpEdgeAngle(args.polish_sharp_edge_angle)
     if args.mean_search_sweeps is not None:
         extract.SetMeanSearchSweeps(args.mean_search_sweeps)
     if args.soft_feature_angle is not None:

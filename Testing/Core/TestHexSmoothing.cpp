@@ -306,6 +306,31 @@ void TestPolishReleasesSoftCorners()
   PCH_CHECK(!projection.SmoothAt(released.Id(n, n, n), corner, 40.0));
   PCH_CHECK(projection.SmoothAt(released.Id(n, n, n), corner, 60.0));
   PCH_CHECK(projection.SmoothAt(centre, released.Mesh.Vertices.row(centre).transpose(), 1.0));
+
+  // Sharp edges: the cube's corner lies on three edges of 90 degrees, so it is free of sharp
+  // edges only when 90 degrees is not sharp; the flat corner has none at any angle (0: off).
+  const Eigen::Vector3d middle = released.Mesh.Vertices.row(centre).transpose();
+  PCH_CHECK(!projection.FreeOfSharpEdgesAt(released.Id(n, n, n), corner, 45.0));
+  PCH_CHECK(!projection.FreeOfSharpEdgesAt(released.Id(n, n, n), corner, 89.0));
+  PCH_CHECK(projection.FreeOfSharpEdgesAt(released.Id(n, n, n), corner, 91.0));
+  PCH_CHECK(projection.FreeOfSharpEdgesAt(centre, middle, 1.0));
+  PCH_CHECK(!projection.FreeOfSharpEdgesAt(centre, middle, 0.0));
+
+  // The same release through PolishSharpEdgeAngle alone (the normals' spread test off): the
+  // flat corner has no sharp edge, so the polish moves it as before; the cube's corners stay.
+  HexSmoothingParameters bySharpness = params;
+  bySharpness.PolishSharpEdgeAngle = 45.0;
+  Lattice sharpness = lattice;
+  HexSmoothingResult sharpnessResult;
+  PCH_CHECK(smoothHexMesh(
+    sharpness.Mesh, sharpness.VertexCharts, sharpness.Surface, bySharpness, sharpnessResult));
+  std::cout << "soft corner pushed aside, released by edge sharpness: SJ min "
+            << sharpnessResult.MinAfter << " (" << sharpnessResult.PolishReleased
+            << " vertices released)" << std::endl;
+  PCH_CHECK(sharpnessResult.PolishReleased >= 1);
+  PCH_CHECK(sharpnessResult.MinAfter > heldResult.MinAfter + 0.05);
+  PCH_CHECK(sharpness.Mesh.Vertices.row(sharpness.Id(n, n, n)) ==
+    lattice.Mesh.Vertices.row(lattice.Id(n, n, n)));
 }
 
 void TestPerfectLatticeStays()
