@@ -141,8 +141,9 @@ public:
   /// the normals about them, where no edge of the input within a hex edge is sharper than this
   /// many degrees (the normals of its two triangles further apart). A tight curve of a coarse
   /// surface turns as much as a box's corner within a hex edge without any sharp edge, and is
-  /// no feature; a box's edge (90 degrees) stays. Default 0 (off), in [0, 180]; 60 raised the
-  /// smoothed minima of spot, elephant and kitten's closed form and kept fandisk's (README).
+  /// no feature; a box's edge (90 degrees) stays. Default 60, in [0, 180]; 0 turns it off. It
+  /// raised the smoothed minima of spot, elephant and kitten's closed form and kept fandisk's
+  /// (README).
   vtkSetClampMacro(PolishSharpEdgeAngle, double, 0.0, 180.0);
   vtkGetMacro(PolishSharpEdgeAngle, double);
   ///@}
@@ -200,7 +201,7 @@ protected:
   double SoftFeatureAngle = 20.0; // the core's DefaultSoftFeatureAngle (checked in the .cxx)
   bool Polish = true;
   double PolishReleaseAngle = 40.0;
-  double PolishSharpEdgeAngle = 0.0;
+  double PolishSharpEdgeAngle = 60.0;
   int MeanSearchSweeps = 3;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;

@@ -80,8 +80,9 @@ struct HexExtractionParameters
   /// and corners; 0: they all stay).
   double PolishReleaseAngle = 40.0;
   /// The polish also releases those corners and curve vertices where no input edge within a hex
-  /// edge is sharper than this (HexSmoothingParameters::PolishSharpEdgeAngle; 0 turns it off).
-  double PolishSharpEdgeAngle = 0.0;
+  /// edge is sharper than this (HexSmoothingParameters::PolishSharpEdgeAngle; default 60; 0
+  /// turns it off).
+  double PolishSharpEdgeAngle = 60.0;
   /// With Smoothing: sweeps in which each vertex also takes steps that raise the mean scaled
   /// Jacobian of its hexes (HexSmoothingParameters::MeanSearchSweeps; default 3; 0 turns them
   /// off).

@@ -85,8 +85,9 @@ struct HexSmoothingParameters
   /// Those vertices are also released, whatever the spread of the normals about them, where no
   /// edge of the input within a hex edge is sharper than this many degrees (the normals of its
   /// two triangles further apart; HexSurfaceProjection::FreeOfSharpEdgesAt): a tight curve of a
-  /// coarse surface is not a feature. 0 (the default) turns this off.
-  double PolishSharpEdgeAngle = 0.0;
+  /// coarse surface is not a feature, while a box's edge (90 degrees) stays. Default 60; 0
+  /// turns this off.
+  double PolishSharpEdgeAngle = 60.0;
 };
 
 /// Quality before and after.

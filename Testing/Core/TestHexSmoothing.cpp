@@ -189,6 +189,7 @@ void TestPolishProgressAndAbort()
   params.SweepsAfterPolish = 0; // so that nothing but the polish runs after the sweeps
   params.MeanSearchSweeps = 0;
   params.PolishReleaseAngle = 0.0; // one round of two polishes
+  params.PolishSharpEdgeAngle = 0.0;
   std::vector<double> fractions;
   HexSmoothingResult result;
   Lattice reported = lattice;
@@ -279,6 +280,7 @@ void TestPolishReleasesSoftCorners()
   HexSmoothingParameters params;
   params.SoftFeatureAngle = 0.0; // no vertex released before the polish
   params.PolishReleaseAngle = 0.0;
+  params.PolishSharpEdgeAngle = 0.0;
   HexSmoothingParameters releasing = params;
   releasing.PolishReleaseAngle = 40.0;
   Lattice held = lattice;
