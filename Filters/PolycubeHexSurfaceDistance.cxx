@@ -2,17 +2,16 @@
 #include "PolycubeHexSurfaceDistance.h"
 
 #include "ThreadCount.h"
+#include "TriangleGrid.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetSurfaceFilter.h>
-#include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkStaticCellLocator.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
 
@@ -105,32 +104,71 @@ bool SampleByArea(vtkPolyData* surface,
   return true;
 }
 
+/// The triangles of `surface` (a triangles-only poly data) as core arrays.
+void ToCoreTriangles(vtkPolyData* surface, Points& vertices, Triangles& faces)
+{
+  const vtkIdType pointCount = surface->GetNumberOfPoints();
+  vertices.resize(pointCount, 3);
+  for (vtkIdType p = 0; p < pointCount; ++p)
+  {
+    surface->GetPoint(p, vertices.row(p).data());
+  }
+  vtkCellArray* polys = surface->GetPolys();
+  faces.resize(polys->GetNumberOfCells(), 3);
+  Eigen::Index count = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType t = 0; t < polys->GetNumberOfCells(); ++t)
+  {
+    polys->GetCellAtId(t, ids);
+    if (ids->GetNumberOfIds() != 3)
+    {
+      continue; // vtkTriangleFilter leaves none; a stray polygon must not be misread
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      faces(count, k) = static_cast<int>(ids->GetId(k));
+    }
+    ++count;
+  }
+  faces.conservativeResize(count, 3);
+}
+
 /// Distance from every sample to the nearest point of `target` (any point of a triangle), the
 /// samples split among the core's threads (VTK's SMP backend may be sequential). Each distance
-/// depends on its sample only, so the threads cannot change the result.
+/// depends on its sample only, so the threads cannot change the result. The core's triangle
+/// grid answers a query several times faster than vtkStaticCellLocator, which builds a generic
+/// cell for every candidate triangle (25-29 us a query on fertility's 35.7k triangles, a quarter
+/// of the hex stage's time); both return the exact distance to the nearest triangle.
 std::vector<double> DistancesTo(const std::vector<double>& samples, vtkPolyData* target)
 {
-  target->BuildCells(); // built here, once, rather than lazily by the first thread
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(target);
-  locator->BuildLocator();
+  Points vertices;
+  Triangles faces;
+  ToCoreTriangles(target, vertices, faces);
+  // Cells of two mean triangle edges hold a few dozen triangles near a curved surface.
+  double edgeSum = 0.0;
+  for (Eigen::Index t = 0; t < faces.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edgeSum += (vertices.row(faces(t, k)) - vertices.row(faces(t, (k + 1) % 3))).norm();
+    }
+  }
+  const double meanEdge = faces.rows() > 0 ? edgeSum / (3.0 * faces.rows()) : 1.0;
+  const TriangleGrid grid(vertices, faces, 2.0 * meanEdge);
 
   const int count = static_cast<int>(samples.size() / 3);
   std::vector<double> distances(static_cast<size_t>(count));
-  // The locator's closest-point query is thread safe when each thread brings its own cell.
   ParallelChunks(count,
     1024,
     [&](int begin, int end)
     {
-      vtkNew<vtkGenericCell> cell;
       for (int s = begin; s < end; ++s)
       {
-        double closest[3];
-        vtkIdType cellId = -1;
-        int subId = 0;
-        double dist2 = 0.0;
-        locator->FindClosestPoint(samples.data() + 3 * s, closest, cell, cellId, subId, dist2);
-        distances[static_cast<size_t>(s)] = std::sqrt(dist2);
+        const Eigen::Vector3d p(samples[3 * s], samples[3 * s + 1], samples[3 * s + 2]);
+        Eigen::Vector3d closest;
+        grid.Nearest(
+          p, [](int) { return true; }, closest);
+        distances[static_cast<size_t>(s)] = (closest - p).norm();
       }
     });
   return distances;

@@ -25,15 +25,14 @@ double NormalisedDeterminant(const Eigen::Vector3d& a,
 }
 } // namespace
 
-std::array<double, 9> HexCornerScaledJacobians(const Eigen::Matrix<double, 8, 3>& x)
+double HexCornerScaledJacobian(const Eigen::Matrix<double, 8, 3>& x, int which)
 {
-  std::array<double, 9> result;
-  for (int c = 0; c < 8; ++c)
+  if (which < 8)
   {
-    const Eigen::Vector3d origin = x.row(c).transpose();
-    result[c] = NormalisedDeterminant(x.row(HexCornerNeighbours[c][0]).transpose() - origin,
-      x.row(HexCornerNeighbours[c][1]).transpose() - origin,
-      x.row(HexCornerNeighbours[c][2]).transpose() - origin);
+    const Eigen::Vector3d origin = x.row(which).transpose();
+    return NormalisedDeterminant(x.row(HexCornerNeighbours[which][0]).transpose() - origin,
+      x.row(HexCornerNeighbours[which][1]).transpose() - origin,
+      x.row(HexCornerNeighbours[which][2]).transpose() - origin);
   }
   // The Jacobian at the centre uses the three principal axes (differences of opposite faces).
   const Eigen::Vector3d e1 =
@@ -45,7 +44,16 @@ std::array<double, 9> HexCornerScaledJacobians(const Eigen::Matrix<double, 8, 3>
   const Eigen::Vector3d e3 =
     (x.row(4) + x.row(5) + x.row(6) + x.row(7) - x.row(0) - x.row(1) - x.row(2) - x.row(3))
       .transpose();
-  result[8] = NormalisedDeterminant(e1, e2, e3);
+  return NormalisedDeterminant(e1, e2, e3);
+}
+
+std::array<double, 9> HexCornerScaledJacobians(const Eigen::Matrix<double, 8, 3>& x)
+{
+  std::array<double, 9> result;
+  for (int which = 0; which < 9; ++which)
+  {
+    result[static_cast<size_t>(which)] = HexCornerScaledJacobian(x, which);
+  }
   return result;
 }
 

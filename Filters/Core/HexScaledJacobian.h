@@ -44,6 +44,11 @@ inline constexpr int HexEdges[12][2] = { { 0, 1 },
 /// each corner (VTK's node order) and, last, at the centre.
 std::array<double, 9> HexCornerScaledJacobians(const Eigen::Matrix<double, 8, 3>& corners);
 
+/// One of those nine values: corner `which` (0 to 7, VTK's node order) or the centre (8). Moving
+/// one hex vertex changes only five of them (its corner, its three edge neighbours and the
+/// centre), so the smoothing recomputes just those.
+double HexCornerScaledJacobian(const Eigen::Matrix<double, 8, 3>& corners, int which);
+
 /// Scaled Jacobian of one hex given its 8 corners in VTK's node order. 1 for a box, <= 0 for a
 /// hex inverted or flat at some corner; 0 when an edge has zero length.
 double HexScaledJacobian(const Eigen::Matrix<double, 8, 3>& corners);

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "MeshTypes.h"
+#include "TriangleGrid.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -61,12 +62,6 @@ enum class HexVertexKind
   Feature,  ///< on the feature curve between its two charts
   Fixed     ///< not at all (three or more charts, or charts the surface does not have)
 };
-
-/// Closest point of triangle (a, b, c) to p, by the Voronoi region of p (vertex, edge or face).
-Eigen::Vector3d ClosestPointOnTriangle(const Eigen::Vector3d& p,
-  const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b,
-  const Eigen::Vector3d& c);
 
 /// The kinds of the hex vertices and their projections onto the chart surface. A released vertex
 /// stays on the triangles of its region (its charts and those joined to them through released
@@ -124,7 +119,6 @@ public:
     Eigen::Vector3d* direction = nullptr) const;
 
 private:
-  class TriangleGrid;
   const HexSmoothingSurface& Surface;
   const std::vector<std::vector<int>>* VertexCharts = nullptr;
   double CellSize = 0.0;
@@ -143,9 +137,6 @@ private:
   /// #F: per edge e (from corner e to e + 1), the cosine between the normals of its two
   /// triangles (1 on a border).
   std::vector<std::array<double, 3>> EdgeCosine;
-  /// #F bounding boxes: a triangle whose box is farther than the nearest one found so far
-  /// cannot be nearer, and is skipped without computing its closest point.
-  std::vector<Eigen::AlignedBox3d> FaceBox;
   /// #V: the normal of a Surface vertex's nearest triangle when it became one; beyond its own
   /// chart it only takes triangles facing the same side.
   std::vector<Eigen::Vector3d> ReferenceNormal;
@@ -157,7 +148,10 @@ private:
     double cosine) const;
   /// The accepted triangle nearest to p (-1 if none) and the closest point on it.
   template<class Accept>
-  int Nearest(const Eigen::Vector3d& p, const Accept& accept, Eigen::Vector3d& closest) const;
+  int Nearest(const Eigen::Vector3d& p, const Accept& accept, Eigen::Vector3d& closest) const
+  {
+    return this->Grid ? this->Grid->Nearest(p, accept, closest) : (closest = p, -1);
+  }
   int Region(int chart) const;
   void SetReferenceNormal(int v, const Eigen::Vector3d& p);
 };

@@ -20,10 +20,15 @@ bool Contains(const std::vector<int>& sorted, int value)
 HexVertexMoves::HexVertexMoves(HexMesh& mesh, const HexSurfaceProjection& projection)
   : Target(mesh)
   , Projection(projection)
-  , HexQuality(ComputeHexScaledJacobians(mesh))
 {
   const int vertexCount = static_cast<int>(mesh.Vertices.rows());
   const int hexCount = static_cast<int>(mesh.Cells.rows());
+  this->HexQuality.resize(hexCount);
+  this->CornerValues.resize(static_cast<size_t>(hexCount));
+  for (int h = 0; h < hexCount; ++h)
+  {
+    this->RefreshHex(h);
+  }
   this->HexesOfVertex.resize(vertexCount);
   this->MeshNeighbours.resize(vertexCount);
   for (int h = 0; h < hexCount; ++h)
@@ -173,11 +178,28 @@ Eigen::Vector3d HexVertexMoves::Landing(int v, const Eigen::Vector3d& p) const
   return this->Kind(v) == HexVertexKind::Interior ? p : this->Projection.Project(v, p);
 }
 
+Eigen::Matrix<double, 8, 3> HexVertexMoves::Corners(int h) const
+{
+  Eigen::Matrix<double, 8, 3> corners;
+  for (int k = 0; k < 8; ++k)
+  {
+    corners.row(k) = this->Target.Vertices.row(this->Target.Cells(h, k));
+  }
+  return corners;
+}
+
+void HexVertexMoves::RefreshHex(int h)
+{
+  std::array<double, 9>& values = this->CornerValues[static_cast<size_t>(h)];
+  values = HexCornerScaledJacobians(this->Corners(h));
+  this->HexQuality[h] = *std::min_element(values.begin(), values.end());
+}
+
 void HexVertexMoves::Refresh(int v)
 {
   for (int h : this->HexesOfVertex[v])
   {
-    this->HexQuality[h] = HexScaledJacobian(this->Target, h);
+    this->RefreshHex(h);
   }
 }
 
@@ -188,8 +210,36 @@ HexVertexMoves::Local HexVertexMoves::Evaluate(int v)
   const std::vector<int>& hexes = this->HexesOfVertex[v];
   for (int h : hexes)
   {
-    const double q = HexScaledJacobian(this->Target, h);
-    this->Evaluated.push_back(q);
+    const Eigen::Matrix<double, 8, 3> corners = this->Corners(h);
+    std::array<double, 9> values = this->CornerValues[static_cast<size_t>(h)];
+    int where = -1;
+    int times = 0;
+    for (int k = 0; k < 8; ++k)
+    {
+      if (this->Target.Cells(h, k) == v)
+      {
+        where = k;
+        ++times;
+      }
+    }
+    if (times == 1)
+    {
+      // v's own corner, the three corners joined to it by an edge, and the centre.
+      for (int which : { where,
+             HexCornerNeighbours[where][0],
+             HexCornerNeighbours[where][1],
+             HexCornerNeighbours[where][2],
+             8 })
+      {
+        values[static_cast<size_t>(which)] = HexCornerScaledJacobian(corners, which);
+      }
+    }
+    else
+    {
+      values = HexCornerScaledJacobians(corners); // a hex holding v twice: all of them
+    }
+    this->Evaluated.push_back(values);
+    const double q = *std::min_element(values.begin(), values.end());
     local.Inverted += q <= 0.0 ? 1 : 0;
     local.Min = std::min(local.Min, q);
     local.Mean += q / static_cast<double>(hexes.size());
@@ -202,7 +252,9 @@ void HexVertexMoves::KeepEvaluated(int v)
   const std::vector<int>& hexes = this->HexesOfVertex[v];
   for (size_t i = 0; i < hexes.size(); ++i)
   {
-    this->HexQuality[hexes[i]] = this->Evaluated[i];
+    const std::array<double, 9>& values = this->Evaluated[i];
+    this->CornerValues[static_cast<size_t>(hexes[i])] = values;
+    this->HexQuality[hexes[i]] = *std::min_element(values.begin(), values.end());
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <vector>
 
 namespace polycubehex
@@ -76,19 +77,26 @@ public:
   void Refresh(int v);
 
 private:
-  /// The quality around v at its present position; remembers each hex's value for KeepEvaluated.
+  /// The quality around v at its present position; remembers each hex's values for
+  /// KeepEvaluated. Recomputes only the corner values that depend on v.
   Local Evaluate(int v);
   void KeepEvaluated(int v);
+  /// Recomputes all nine corner values of hex h and its scaled Jacobian.
+  void RefreshHex(int h);
+  Eigen::Matrix<double, 8, 3> Corners(int h) const;
 
   HexMesh& Target;
   const HexSurfaceProjection& Projection;
   Eigen::VectorXd HexQuality;
+  /// #H: the nine values whose minimum is each hex's scaled Jacobian (HexCornerScaledJacobians),
+  /// so that a move recomputes only the five that depend on the moved vertex.
+  std::vector<std::array<double, 9>> CornerValues;
   std::vector<std::vector<int>> HexesOfVertex;
   std::vector<std::vector<int>> MeshNeighbours;
   std::vector<std::vector<int>> SurfaceNeighbours;
   std::vector<std::vector<int>> QuadsOfVertex;
   Quads BoundaryQuads;
-  std::vector<double> Evaluated;
+  std::vector<std::array<double, 9>> Evaluated; ///< corner values at the evaluated position
 };
 
 } // namespace polycubehex
