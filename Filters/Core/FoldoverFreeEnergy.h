@@ -20,9 +20,13 @@
 namespace polycubehex
 {
 
+// Both functions are forced inline: GCC left JacobianEnergy out of line, and it is a fifth of
+// the hex stage's time (nine calls per hex per untangling evaluation); inlined, the untangling
+// of fertility's closed form takes 2.0-2.1 s instead of 2.45-2.5 s with bit-identical results.
+
 /// chi(D, eps) = (D + sqrt(eps^2 + D^2)) / 2, written without cancellation for D < 0, and its
 /// derivative chi / sqrt(eps^2 + D^2).
-inline void Chi(double d, double eps, double& chi, double& derivative)
+[[gnu::always_inline]] inline void Chi(double d, double eps, double& chi, double& derivative)
 {
   const double root = std::sqrt(eps * eps + d * d);
   chi = d >= 0.0 ? 0.5 * (d + root) : 0.5 * eps * eps / (root - d);
@@ -31,7 +35,7 @@ inline void Chi(double d, double eps, double& chi, double& derivative)
 
 /// The energy of one Jacobian J = [a b c] (columns) and its derivative with respect to the
 /// columns; `det` receives det J.
-inline double JacobianEnergy(const Eigen::Vector3d& a,
+[[gnu::always_inline]] inline double JacobianEnergy(const Eigen::Vector3d& a,
   const Eigen::Vector3d& b,
   const Eigen::Vector3d& c,
   double eps,
