@@ -312,6 +312,10 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
     fields, "RemovedDoubletHexCount", result.RemovedDoubletHexCount);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RemovedPinchHexCount", result.RemovedPinchHexCount);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "UntanglingRounds", result.UntanglingRounds);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "UntanglingIterations", result.UntanglingIterations);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "SmoothingSweeps", result.SmoothingSweeps);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "UntanglingSeconds", result.UntanglingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "SmoothingSeconds", result.SmoothingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields,

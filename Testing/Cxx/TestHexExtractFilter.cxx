@@ -52,14 +52,16 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeBoxPolycube(int m, const double size[3]
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  auto id = [m](int i, int j, int k) { return static_cast<vtkIdType>((k * (m + 1) + j) * (m + 1) + i); };
+  auto id = [m](int i, int j, int k)
+  { return static_cast<vtkIdType>((k * (m + 1) + j) * (m + 1) + i); };
   for (int k = 0; k <= m; ++k)
     for (int j = 0; j <= m; ++j)
       for (int i = 0; i <= m; ++i)
         points->InsertNextPoint(size[0] * i / m, size[1] * j / m, size[2] * k / m);
   grid->SetPoints(points);
-  const int permutations[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 },
-    { 2, 1, 0 } };
+  const int permutations[6][3] = {
+    { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 }
+  };
   for (int k = 0; k < m; ++k)
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i)
@@ -104,7 +106,8 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeBoxPolycube(int m, const double size[3]
           bool onPlane = true;
           for (int c = 0; c < 3; ++c)
           {
-            onPlane = onPlane && std::fabs(points->GetPoint(ids[TetFaces[f][c]])[axis] - plane) < 1e-12;
+            onPlane =
+              onPlane && std::fabs(points->GetPoint(ids[TetFaces[f][c]])[axis] - plane) < 1e-12;
           }
           label = onPlane ? 2 * axis + side : -1; // +X, -X, +Y, -Y, +Z, -Z
         }
@@ -147,6 +150,9 @@ int main(int, char*[])
     PCH_CHECK(FieldValue(hexes, "ValidHexMesh") == 1);
     PCH_CHECK_NEAR(FieldValue(hexes, "DistanceHausdorff"), 0.0, 1e-6);
     PCH_CHECK(hexes->GetCellData()->GetArray("ScaledJacobian") != nullptr);
+    // Without smoothing neither the untangling nor the sweeps run.
+    PCH_CHECK(FieldValue(hexes, "UntanglingRounds") == 0);
+    PCH_CHECK(FieldValue(hexes, "SmoothingSweeps") == 0);
     vtkPolyData* quads = vtkPolyData::SafeDownCast(extract->GetOutputDataObject(1));
     PCH_CHECK(quads->GetNumberOfPolys() == 6 * n * n);
     PCH_CHECK(quads->GetCellData()->GetArray("PolycubeLabel") != nullptr);
@@ -166,6 +172,10 @@ int main(int, char*[])
     PCH_CHECK(std::fabs(hexes->GetNumberOfCells() - 1000.0) <= 100.0);
     PCH_CHECK(FieldValue(hexes, "ValidHexMesh") == 1);
     PCH_CHECK(FieldValue(hexes, "ScaledJacobianMin") > 0.3);
+    // The work the untangling and the smoothing did is reported.
+    PCH_CHECK(FieldValue(hexes, "UntanglingRounds") >= 1);
+    PCH_CHECK(FieldValue(hexes, "UntanglingIterations") >= 1);
+    PCH_CHECK(FieldValue(hexes, "SmoothingSweeps") >= 1);
   }
 
   // Padding without smoothing: the placement of the inner copies lowers no minimum (it ranks the
@@ -277,7 +287,8 @@ int main(int, char*[])
     extract->Update();
     PCH_CHECK(extract->GetOutput(0)->GetNumberOfCells() == 0);
     std::cout << "inverted tet: " << errors->Messages;
-    PCH_CHECK(errors->Mentions("invert") || errors->Mentions("negative") || errors->Mentions("flat"));
+    PCH_CHECK(
+      errors->Mentions("invert") || errors->Mentions("negative") || errors->Mentions("flat"));
   }
   return PCH_TEST_RESULT();
 }
