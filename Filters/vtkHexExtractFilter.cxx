@@ -217,6 +217,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.PolishReleaseAngle = this->PolishReleaseAngle;
   params.PolishSharpEdgeAngle = this->PolishSharpEdgeAngle;
   params.MeanSearchSweeps = this->MeanSearchSweeps;
+  params.UntanglingPaths = this->UntanglingPaths;
   auto progress = [this](double fraction)
   {
     this->UpdateProgress(0.8 * fraction);
@@ -313,6 +314,7 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "RemovedPinchHexCount", result.RemovedPinchHexCount);
   polycubehex::SetFieldValue<vtkIntArray>(fields, "UntanglingRounds", result.UntanglingRounds);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "UntanglingPath", result.UntanglingPath);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "UntanglingIterations", result.UntanglingIterations);
   polycubehex::SetFieldValue<vtkIntArray>(fields, "SmoothingSweeps", result.SmoothingSweeps);
@@ -361,6 +363,7 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PolishReleaseAngle: " << this->PolishReleaseAngle << "\n";
   os << indent << "PolishSharpEdgeAngle: " << this->PolishSharpEdgeAngle << "\n";
   os << indent << "MeanSearchSweeps: " << this->MeanSearchSweeps << "\n";
+  os << indent << "UntanglingPaths: " << this->UntanglingPaths << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";
 }

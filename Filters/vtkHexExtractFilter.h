@@ -161,6 +161,16 @@ public:
   ///@}
 
   ///@{
+  /// With Smoothing and Untangling: 1 (the default) untangles and smooths once; 2 also runs a
+  /// second path whose untangling ends once the count of inverted hexes stops falling for two
+  /// rounds, smooths it, and keeps the better mesh (fewer inverted hexes, then the larger
+  /// minimum, then the larger mean): never worse, for up to twice the untangling and
+  /// smoothing time. The field UntanglingPath says which was kept. In [1, 2].
+  vtkSetClampMacro(UntanglingPaths, int, 1, 2);
+  vtkGetMacro(UntanglingPaths, int);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -203,6 +213,7 @@ protected:
   double PolishReleaseAngle = 40.0;
   double PolishSharpEdgeAngle = 60.0;
   int MeanSearchSweeps = 3;
+  int UntanglingPaths = 1;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;
 

@@ -525,67 +525,127 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       charts.FaceChart,
       cut ? gluedChart : std::vector<int>(),
       cut ? SeamVertexIdentity(static_cast<int>(original.rows()), seams) : std::vector<int>());
-    // One projection for both, so that the smoothing moves the vertices the untangling released
-    // the same way.
-    HexSurfaceProjection projection(surface, vertexCharts, mesh, params.SoftFeatureAngle);
-    // After the projection has taken its boundary from the whole mesh: the vertices a removed
-    // hex uncovers were interior and stay free (HexDoublets.h). Overlapping hexes first, as
-    // their quads hide doublets from the face count.
+    // Where the untangling stops changes what the smoothing reaches, either way (rockerarm's
+    // closed form 0.402 or 0.591), so with UntanglingPaths 2 a second path whose untangling
+    // ends once its inverted count stalls is smoothed too, and the better mesh is kept. Each
+    // path has its own projection, shared by its untangling and smoothing so that the
+    // smoothing moves the vertices the untangling released the same way.
+    const int pathCount = untangle ? std::clamp(params.UntanglingPaths, 1, 2) : 1;
+    std::vector<std::unique_ptr<HexSurfaceProjection>> projections;
+    for (int path = 0; path < pathCount; ++path)
+    {
+      projections.push_back(std::make_unique<HexSurfaceProjection>(
+        surface, vertexCharts, mesh, params.SoftFeatureAngle));
+    }
+    // After the projections have taken their boundary from the whole mesh: the vertices a
+    // removed hex uncovers were interior and stay free (HexDoublets.h). Overlapping hexes
+    // first, as their quads hide doublets from the face count.
     if (params.RemoveDoublets)
     {
       result.RemovedDoubletHexCount = RemoveOverlappingHexes(mesh, rawQuality);
       result.RemovedDoubletHexCount +=
         RemoveBoundaryDoublets(mesh, ComputeHexScaledJacobians(mesh));
     }
-    if (untangle)
+    const HexMesh unsmoothed = pathCount > 1 ? mesh : HexMesh();
+    HexExtractionResult best; // the kept path's fields
+    HexMesh bestMesh;
+    double untanglingSeconds = Seconds(start); // the projections and doublets count with it
+    double smoothingSeconds = 0.0;
+    for (int path = 0; path < pathCount; ++path)
     {
-      HexUntanglingResult untangled;
-      status = untangleHexMesh(mesh,
-        projection,
-        HexUntanglingParameters(),
-        untangled,
-        [&progress](double p) { return ReportProgress(progress, 0.65 + 0.15 * p); });
-      if (!status)
+      HexMesh candidate = path == 0 ? std::move(mesh) : unsmoothed;
+      HexSurfaceProjection& projection = *projections[static_cast<size_t>(path)];
+      HexExtractionResult fields; // the "after untangling" fields stay the raw ones without it
+      fields.ScaledJacobianMinAfterUntangling = result.ScaledJacobianMinAfterUntangling;
+      fields.ScaledJacobianMeanAfterUntangling = result.ScaledJacobianMeanAfterUntangling;
+      fields.InvertedHexCountAfterUntangling = result.InvertedHexCountAfterUntangling;
+      const double from = 0.65 + 0.3 * path / pathCount;
+      const double width = 0.3 / pathCount;
+      auto pathStart = std::chrono::steady_clock::now();
+      if (untangle)
       {
-        return status;
+        HexUntanglingParameters untangling;
+        untangling.StallRounds = path == 0 ? 0 : 2;
+        HexUntanglingResult untangled;
+        status = untangleHexMesh(candidate,
+          projection,
+          untangling,
+          untangled,
+          [&progress, from, width](double p)
+          { return ReportProgress(progress, from + 0.5 * width * p); });
+        if (!status)
+        {
+          return status;
+        }
+        fields.ScaledJacobianMinAfterUntangling = untangled.MinAfter;
+        fields.ScaledJacobianMeanAfterUntangling = untangled.MeanAfter;
+        fields.InvertedHexCountAfterUntangling = untangled.InvertedAfter;
+        fields.UntanglingRounds = untangled.Rounds;
+        fields.UntanglingIterations = untangled.Iterations;
+        fields.UntanglingKept = untangled.Kept;
       }
-      result.ScaledJacobianMinAfterUntangling = untangled.MinAfter;
-      result.ScaledJacobianMeanAfterUntangling = untangled.MeanAfter;
-      result.InvertedHexCountAfterUntangling = untangled.InvertedAfter;
-      result.UntanglingRounds = untangled.Rounds;
-      result.UntanglingIterations = untangled.Iterations;
-      result.UntanglingKept = untangled.Kept;
+      untanglingSeconds += Seconds(pathStart);
+      pathStart = std::chrono::steady_clock::now();
+      if (smooth)
+      {
+        HexSmoothingParameters smoothing;
+        smoothing.Iterations = params.SmoothingIterations;
+        if (!params.Polish)
+        {
+          smoothing.PolishPasses = 0;
+        }
+        smoothing.PolishReleaseAngle = params.PolishReleaseAngle;
+        smoothing.PolishSharpEdgeAngle = params.PolishSharpEdgeAngle;
+        smoothing.MeanSearchSweeps = params.MeanSearchSweeps;
+        HexSmoothingResult smoothed;
+        status = smoothHexMesh(candidate,
+          projection,
+          smoothing,
+          smoothed,
+          [&progress, from, width](double p)
+          { return ReportProgress(progress, from + 0.5 * width + 0.5 * width * p); });
+        if (!status)
+        {
+          return status;
+        }
+        fields.SmoothingSweeps = smoothed.Sweeps;
+        fields.ScaledJacobianMinBeforePolish = smoothed.MinBeforePolish;
+        fields.PolishReleasedVertexCount = smoothed.PolishReleased;
+      }
+      smoothingSeconds += Seconds(pathStart);
+      fields.ReleasedBoundaryVertexCount = projection.ReleasedCount();
+      // Fewer inverted hexes first, then the larger minimum, then the larger mean.
+      const Eigen::VectorXd quality = ComputeHexScaledJacobians(candidate);
+      fields.ScaledJacobianMin = quality.minCoeff();
+      fields.ScaledJacobianMean = quality.mean();
+      fields.InvertedHexCount = static_cast<int>((quality.array() <= 0.0).count());
+      const bool better = path == 0 || fields.InvertedHexCount < best.InvertedHexCount ||
+        (fields.InvertedHexCount == best.InvertedHexCount &&
+          (fields.ScaledJacobianMin > best.ScaledJacobianMin ||
+            (fields.ScaledJacobianMin == best.ScaledJacobianMin &&
+              fields.ScaledJacobianMean > best.ScaledJacobianMean)));
+      if (better)
+      {
+        best = fields;
+        best.UntanglingPath = untangle ? path + 1 : 0;
+        bestMesh = std::move(candidate);
+      }
     }
-    result.UntanglingSeconds = Seconds(start);
-    start = std::chrono::steady_clock::now();
-    if (smooth)
-    {
-      HexSmoothingParameters smoothing;
-      smoothing.Iterations = params.SmoothingIterations;
-      if (!params.Polish)
-      {
-        smoothing.PolishPasses = 0;
-      }
-      smoothing.PolishReleaseAngle = params.PolishReleaseAngle;
-      smoothing.PolishSharpEdgeAngle = params.PolishSharpEdgeAngle;
-      smoothing.MeanSearchSweeps = params.MeanSearchSweeps;
-      HexSmoothingResult smoothed;
-      status = smoothHexMesh(mesh,
-        projection,
-        smoothing,
-        smoothed,
-        [&progress](double p) { return ReportProgress(progress, 0.8 + 0.15 * p); });
-      if (!status)
-      {
-        return status;
-      }
-      result.SmoothingSweeps = smoothed.Sweeps;
-      result.ScaledJacobianMinBeforePolish = smoothed.MinBeforePolish;
-      result.PolishReleasedVertexCount = smoothed.PolishReleased;
-    }
-    result.ReleasedBoundaryVertexCount = projection.ReleasedCount();
+    mesh = std::move(bestMesh);
+    result.ScaledJacobianMinAfterUntangling = best.ScaledJacobianMinAfterUntangling;
+    result.ScaledJacobianMeanAfterUntangling = best.ScaledJacobianMeanAfterUntangling;
+    result.InvertedHexCountAfterUntangling = best.InvertedHexCountAfterUntangling;
+    result.UntanglingRounds = best.UntanglingRounds;
+    result.UntanglingIterations = best.UntanglingIterations;
+    result.UntanglingKept = best.UntanglingKept;
+    result.SmoothingSweeps = best.SmoothingSweeps;
+    result.ScaledJacobianMinBeforePolish = best.ScaledJacobianMinBeforePolish;
+    result.PolishReleasedVertexCount = best.PolishReleasedVertexCount;
+    result.ReleasedBoundaryVertexCount = best.ReleasedBoundaryVertexCount;
+    result.UntanglingPath = best.UntanglingPath;
+    result.UntanglingSeconds = untanglingSeconds;
+    result.SmoothingSeconds = smoothingSeconds;
   }
-  result.SmoothingSeconds = Seconds(start);
 
   // 6. Measures and output in the input's units.
   start = std::chrono::steady_clock::now();

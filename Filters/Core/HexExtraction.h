@@ -87,6 +87,12 @@ struct HexExtractionParameters
   /// Jacobian of its hexes (HexSmoothingParameters::MeanSearchSweeps; default 3; 0 turns them
   /// off).
   int MeanSearchSweeps = 3;
+  /// With Smoothing and Untangling: 1 (the default) untangles and smooths once; 2 also runs a
+  /// second path whose untangling ends its main rounds once the count of inverted hexes has
+  /// set no new low for two rounds (HexUntanglingParameters::StallRounds), smooths it, and
+  /// keeps the better mesh (fewer inverted hexes, then the larger minimum, then the larger
+  /// mean), so it is never worse, for up to twice the untangling and smoothing time.
+  int UntanglingPaths = 1;
   /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
   /// the surface across its charts where the input's normals about it vary by at most this
   /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).
@@ -175,6 +181,9 @@ struct HexExtractionResult
   int InvertedHexCountAfterUntangling = 0;
   int UntanglingRounds = 0;
   int UntanglingIterations = 0;
+  /// Which untangling path was kept (UntanglingPaths; 1 the full untangling, 2 the one stopped
+  /// at a stall), 0 without untangling.
+  int UntanglingPath = 0;
   /// False when the untangling did not run or its result was worse than its input (discarded).
   bool UntanglingKept = false;
   /// Boundary vertices on a polycube edge or corner released onto the surface (SoftFeatureAngle,

@@ -567,6 +567,8 @@ Status untangleHexMesh(HexMesh& mesh,
     before.Inverted == 0 ? std::min(params.MaxRounds, params.MaxRoundsValid) : params.MaxRounds;
   int totalRounds = mainRounds + std::max(0, params.FinalRounds);
   bool curvesReleased = false;
+  int fewestInverted = std::numeric_limits<int>::max();
+  int roundsWithoutFewer = 0;
   for (int round = 0; round < totalRounds; ++round)
   {
     const bool polish = round >= mainRounds;
@@ -619,13 +621,29 @@ Status untangleHexMesh(HexMesh& mesh,
     }
     // The last main round leaving hexes inverted: their curve vertices give way too, and a
     // few more rounds follow (once).
+    // Or a main round when the count of inverted hexes has set no new low for StallRounds.
+    if (!polish)
+    {
+      roundsWithoutFewer = last.Inverted < fewestInverted ? 0 : roundsWithoutFewer + 1;
+      fewestInverted = std::min(fewestInverted, last.Inverted);
+    }
+    const bool invertedStalled = !polish && last.Inverted > 0 && params.StallRounds > 0 &&
+      roundsWithoutFewer >= params.StallRounds;
     const bool lastChance = !polish && !curvesReleased && last.Inverted > 0 &&
-      round + 1 >= mainRounds && params.ReleaseCurvesBelow > -1.0 && params.CurveRounds > 0;
+      (round + 1 >= mainRounds || invertedStalled) && params.ReleaseCurvesBelow > -1.0 &&
+      params.CurveRounds > 0;
     const int released = polish ? 0 : release(quality, lastChance);
     if (lastChance)
     {
       curvesReleased = true;
       mainRounds = round + 1 + params.CurveRounds;
+      totalRounds = mainRounds + std::max(0, params.FinalRounds);
+      fewestInverted = std::numeric_limits<int>::max();
+      roundsWithoutFewer = 0;
+    }
+    else if (invertedStalled)
+    {
+      mainRounds = round + 1; // the final rounds next
       totalRounds = mainRounds + std::max(0, params.FinalRounds);
     }
 

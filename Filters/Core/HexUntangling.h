@@ -76,6 +76,11 @@ struct HexUntanglingParameters
   double ReleaseCurvesBelow = 0.0;
   /// Main rounds after that release (default 4, >= 0; 0 turns the release off).
   int CurveRounds = 4;
+  /// When hexes stay inverted, the main rounds end early once this many pass without a new
+  /// low in the count of inverted hexes (the curve release and its rounds then follow once,
+  /// then the final rounds); 0 (the default) runs them all. Where the untangling stops changes
+  /// what the smoothing reaches, either way (HexExtractionParameters::UntanglingPaths).
+  int StallRounds = 0;
 };
 
 /// What the step did.

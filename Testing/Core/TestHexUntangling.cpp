@@ -128,6 +128,38 @@ void TestThreadsGiveSameBits()
   PCH_CHECK(results[0].Iterations == results[1].Iterations);
 }
 
+/// A cube corner, which may not move, pushed inside past the interior vertex next to it: its
+/// hex stays inverted whatever the others do. With StallRounds the main rounds end once the
+/// inverted count stops falling, sooner than the full run, and the result is still no worse
+/// than the input.
+void TestStallEndsRounds()
+{
+  HexUntanglingResult results[2];
+  for (int stall : { 0, 1 })
+  {
+    Lattice lattice = MakeLattice(4);
+    lattice.Mesh.Vertices.row(lattice.Id(0, 0, 0)) = Eigen::RowVector3d(0.4, 0.4, 0.4);
+    HexUntanglingParameters params;
+    params.ReleaseBelow = -1.0; // the corner stays a corner
+    params.ReleaseCurvesBelow = -1.0;
+    params.StallRounds = stall == 1 ? 2 : 0;
+    HexUntanglingResult& result = results[stall];
+    PCH_CHECK(untangleHexMesh(lattice.Mesh, lattice.VertexCharts, lattice.Surface, params, result));
+    const Eigen::VectorXd quality = ComputeHexScaledJacobians(lattice.Mesh);
+    std::cout << "pushed corner, StallRounds " << params.StallRounds << ": " << result.Rounds
+              << " rounds, inverted " << result.InvertedBefore << " -> " << result.InvertedAfter
+              << ", SJ min " << result.MinBefore << " -> " << result.MinAfter << std::endl;
+    PCH_CHECK(result.InvertedBefore > 0);
+    PCH_CHECK(result.InvertedAfter > 0); // the setup must leave the count stalled
+    PCH_CHECK(result.InvertedAfter <= result.InvertedBefore);
+    PCH_CHECK(static_cast<int>((quality.array() <= 0.0).count()) == result.InvertedAfter);
+    PCH_CHECK(lattice.Mesh.Vertices.row(lattice.Id(0, 0, 0)) == Eigen::RowVector3d(0.4, 0.4, 0.4));
+  }
+  PCH_CHECK(results[1].Rounds < results[0].Rounds);
+  PCH_CHECK(results[0].Rounds ==
+    HexUntanglingParameters().MaxRounds + HexUntanglingParameters().FinalRounds);
+}
+
 void TestRefusals()
 {
   Lattice lattice = MakeLattice(2);
@@ -146,6 +178,7 @@ int main(int, char*[])
   TestTangledLattice();
   TestPerfectLatticeStays();
   TestThreadsGiveSameBits();
+  TestStallEndsRounds();
   TestRefusals();
   return PCH_TEST_RESULT();
 }

@@ -153,6 +153,7 @@ int main(int, char*[])
     // Without smoothing neither the untangling nor the sweeps run.
     PCH_CHECK(FieldValue(hexes, "UntanglingRounds") == 0);
     PCH_CHECK(FieldValue(hexes, "SmoothingSweeps") == 0);
+    PCH_CHECK(FieldValue(hexes, "UntanglingPath") == 0);
     vtkPolyData* quads = vtkPolyData::SafeDownCast(extract->GetOutputDataObject(1));
     PCH_CHECK(quads->GetNumberOfPolys() == 6 * n * n);
     PCH_CHECK(quads->GetCellData()->GetArray("PolycubeLabel") != nullptr);
@@ -176,6 +177,22 @@ int main(int, char*[])
     PCH_CHECK(FieldValue(hexes, "UntanglingRounds") >= 1);
     PCH_CHECK(FieldValue(hexes, "UntanglingIterations") >= 1);
     PCH_CHECK(FieldValue(hexes, "SmoothingSweeps") >= 1);
+    PCH_CHECK(extract->GetUntanglingPaths() == 1);
+    PCH_CHECK(FieldValue(hexes, "UntanglingPath") == 1);
+
+    // Two untangling paths keep the better mesh: never a lower minimum than one path.
+    vtkNew<vtkHexExtractFilter> twoPaths;
+    twoPaths->SetInputData(MakeBoxPolycube(2, slab));
+    twoPaths->SetTargetHexCount(1000);
+    twoPaths->SetNumberOfDistanceSamples(20000);
+    twoPaths->SetUntanglingPaths(2);
+    twoPaths->Update();
+    vtkUnstructuredGrid* best = twoPaths->GetOutput(0);
+    std::cout << "slab with two untangling paths: SJ min " << FieldValue(best, "ScaledJacobianMin")
+              << ", path " << FieldValue(best, "UntanglingPath") << "\n";
+    PCH_CHECK(FieldValue(best, "ValidHexMesh") == 1);
+    PCH_CHECK(FieldValue(best, "ScaledJacobianMin") >= FieldValue(hexes, "ScaledJacobianMin"));
+    PCH_CHECK(FieldValue(best, "UntanglingPath") == 1 || FieldValue(best, "UntanglingPath") == 2);
   }
 
   // Padding without smoothing: the placement of the inner copies lowers no minimum (it ranks the
