@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolycubeHexSurfaceDistance.h"
 
+#include "PolycubeHexConversion.h"
 #include "ThreadCount.h"
 #include "TriangleGrid.h"
 
@@ -104,46 +105,16 @@ bool SampleByArea(vtkPolyData* surface,
   return true;
 }
 
-/// The triangles of `surface` (a triangles-only poly data) as core arrays.
-void ToCoreTriangles(vtkPolyData* surface, Points& vertices, Triangles& faces)
-{
-  const vtkIdType pointCount = surface->GetNumberOfPoints();
-  vertices.resize(pointCount, 3);
-  for (vtkIdType p = 0; p < pointCount; ++p)
-  {
-    surface->GetPoint(p, vertices.row(p).data());
-  }
-  vtkCellArray* polys = surface->GetPolys();
-  faces.resize(polys->GetNumberOfCells(), 3);
-  Eigen::Index count = 0;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType t = 0; t < polys->GetNumberOfCells(); ++t)
-  {
-    polys->GetCellAtId(t, ids);
-    if (ids->GetNumberOfIds() != 3)
-    {
-      continue; // vtkTriangleFilter leaves none; a stray polygon must not be misread
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      faces(count, k) = static_cast<int>(ids->GetId(k));
-    }
-    ++count;
-  }
-  faces.conservativeResize(count, 3);
-}
-
 /// Distance from every sample to the nearest point of `target` (any point of a triangle), the
 /// samples split among the core's threads (VTK's SMP backend may be sequential). Each distance
 /// depends on its sample only, so the threads cannot change the result. The core's triangle
 /// grid answers a query several times faster than vtkStaticCellLocator, which builds a generic
 /// cell for every candidate triangle (25-29 us a query on fertility's 35.7k triangles, a quarter
 /// of the hex stage's time); both return the exact distance to the nearest triangle.
-std::vector<double> DistancesTo(const std::vector<double>& samples, vtkPolyData* target)
+std::vector<double> DistancesTo(const std::vector<double>& samples, const SurfaceMesh& target)
 {
-  Points vertices;
-  Triangles faces;
-  ToCoreTriangles(target, vertices, faces);
+  const Points& vertices = target.Vertices;
+  const Triangles& faces = target.Faces;
   // Cells of two mean triangle edges hold a few dozen triangles near a curved surface.
   double edgeSum = 0.0;
   for (Eigen::Index t = 0; t < faces.rows(); ++t)
@@ -241,13 +212,20 @@ bool ComputeSurfaceDistance(vtkDataSet* mesh,
     return false;
   }
 
-  const std::vector<double> toReference = DistancesTo(meshSamples, referenceSurface);
+  SurfaceMesh meshTriangles;
+  SurfaceMesh referenceTriangles;
+  if (!ToSurfaceMesh(meshSurface, meshTriangles, why) ||
+    !ToSurfaceMesh(referenceSurface, referenceTriangles, why))
+  {
+    return false;
+  }
+  const std::vector<double> toReference = DistancesTo(meshSamples, referenceTriangles);
   if (!ReportProgress(progress, 0.6))
   {
     why = "aborted";
     return false;
   }
-  const std::vector<double> fromReference = DistancesTo(referenceSamples, meshSurface);
+  const std::vector<double> fromReference = DistancesTo(referenceSamples, meshTriangles);
 
   // The paper's unit: 1e-3 of the reference's bounding-box diagonal.
   const double unit = 1e-3 * diagonal;

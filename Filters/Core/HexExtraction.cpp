@@ -547,18 +547,24 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         RemoveBoundaryDoublets(mesh, ComputeHexScaledJacobians(mesh));
     }
     const HexMesh unsmoothed = pathCount > 1 ? mesh : HexMesh();
-    HexExtractionResult best; // the kept path's fields
-    HexMesh bestMesh;
+    // What one path made; the better one's goes into the result.
+    struct PathOutcome
+    {
+      HexMesh Mesh;
+      HexUntanglingResult Untangled;
+      HexSmoothingResult Smoothed;
+      int Released = 0;
+      HexQualitySummary Quality;
+    };
+    PathOutcome best;
+    int bestPath = -1;
     double untanglingSeconds = Seconds(start); // the projections and doublets count with it
     double smoothingSeconds = 0.0;
     for (int path = 0; path < pathCount; ++path)
     {
-      HexMesh candidate = path == 0 ? std::move(mesh) : unsmoothed;
+      PathOutcome outcome;
+      outcome.Mesh = path == 0 ? std::move(mesh) : unsmoothed;
       HexSurfaceProjection& projection = *projections[static_cast<size_t>(path)];
-      HexExtractionResult fields; // the "after untangling" fields stay the raw ones without it
-      fields.ScaledJacobianMinAfterUntangling = result.ScaledJacobianMinAfterUntangling;
-      fields.ScaledJacobianMeanAfterUntangling = result.ScaledJacobianMeanAfterUntangling;
-      fields.InvertedHexCountAfterUntangling = result.InvertedHexCountAfterUntangling;
       const double from = 0.65 + 0.3 * path / pathCount;
       const double width = 0.3 / pathCount;
       auto pathStart = std::chrono::steady_clock::now();
@@ -566,23 +572,16 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       {
         HexUntanglingParameters untangling;
         untangling.StallRounds = path == 0 ? 0 : 2;
-        HexUntanglingResult untangled;
-        status = untangleHexMesh(candidate,
+        status = untangleHexMesh(outcome.Mesh,
           projection,
           untangling,
-          untangled,
+          outcome.Untangled,
           [&progress, from, width](double p)
           { return ReportProgress(progress, from + 0.5 * width * p); });
         if (!status)
         {
           return status;
         }
-        fields.ScaledJacobianMinAfterUntangling = untangled.MinAfter;
-        fields.ScaledJacobianMeanAfterUntangling = untangled.MeanAfter;
-        fields.InvertedHexCountAfterUntangling = untangled.InvertedAfter;
-        fields.UntanglingRounds = untangled.Rounds;
-        fields.UntanglingIterations = untangled.Iterations;
-        fields.UntanglingKept = untangled.Kept;
       }
       untanglingSeconds += Seconds(pathStart);
       pathStart = std::chrono::steady_clock::now();
@@ -597,52 +596,44 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         smoothing.PolishReleaseAngle = params.PolishReleaseAngle;
         smoothing.PolishSharpEdgeAngle = params.PolishSharpEdgeAngle;
         smoothing.MeanSearchSweeps = params.MeanSearchSweeps;
-        HexSmoothingResult smoothed;
-        status = smoothHexMesh(candidate,
+        status = smoothHexMesh(outcome.Mesh,
           projection,
           smoothing,
-          smoothed,
+          outcome.Smoothed,
           [&progress, from, width](double p)
           { return ReportProgress(progress, from + 0.5 * width + 0.5 * width * p); });
         if (!status)
         {
           return status;
         }
-        fields.SmoothingSweeps = smoothed.Sweeps;
-        fields.ScaledJacobianMinBeforePolish = smoothed.MinBeforePolish;
-        fields.PolishReleasedVertexCount = smoothed.PolishReleased;
       }
       smoothingSeconds += Seconds(pathStart);
-      fields.ReleasedBoundaryVertexCount = projection.ReleasedCount();
-      // Fewer inverted hexes first, then the larger minimum, then the larger mean.
-      const Eigen::VectorXd quality = ComputeHexScaledJacobians(candidate);
-      fields.ScaledJacobianMin = quality.minCoeff();
-      fields.ScaledJacobianMean = quality.mean();
-      fields.InvertedHexCount = static_cast<int>((quality.array() <= 0.0).count());
-      const bool better = path == 0 || fields.InvertedHexCount < best.InvertedHexCount ||
-        (fields.InvertedHexCount == best.InvertedHexCount &&
-          (fields.ScaledJacobianMin > best.ScaledJacobianMin ||
-            (fields.ScaledJacobianMin == best.ScaledJacobianMin &&
-              fields.ScaledJacobianMean > best.ScaledJacobianMean)));
-      if (better)
+      outcome.Released = projection.ReleasedCount();
+      outcome.Quality = SummarizeHexQuality(ComputeHexScaledJacobians(outcome.Mesh));
+      if (path == 0 || BetterHexQuality(outcome.Quality, best.Quality))
       {
-        best = fields;
-        best.UntanglingPath = untangle ? path + 1 : 0;
-        bestMesh = std::move(candidate);
+        best = std::move(outcome);
+        bestPath = path;
       }
     }
-    mesh = std::move(bestMesh);
-    result.ScaledJacobianMinAfterUntangling = best.ScaledJacobianMinAfterUntangling;
-    result.ScaledJacobianMeanAfterUntangling = best.ScaledJacobianMeanAfterUntangling;
-    result.InvertedHexCountAfterUntangling = best.InvertedHexCountAfterUntangling;
-    result.UntanglingRounds = best.UntanglingRounds;
-    result.UntanglingIterations = best.UntanglingIterations;
-    result.UntanglingKept = best.UntanglingKept;
-    result.SmoothingSweeps = best.SmoothingSweeps;
-    result.ScaledJacobianMinBeforePolish = best.ScaledJacobianMinBeforePolish;
-    result.PolishReleasedVertexCount = best.PolishReleasedVertexCount;
-    result.ReleasedBoundaryVertexCount = best.ReleasedBoundaryVertexCount;
-    result.UntanglingPath = best.UntanglingPath;
+    mesh = std::move(best.Mesh);
+    if (untangle)
+    {
+      result.ScaledJacobianMinAfterUntangling = best.Untangled.MinAfter;
+      result.ScaledJacobianMeanAfterUntangling = best.Untangled.MeanAfter;
+      result.InvertedHexCountAfterUntangling = best.Untangled.InvertedAfter;
+      result.UntanglingRounds = best.Untangled.Rounds;
+      result.UntanglingIterations = best.Untangled.Iterations;
+      result.UntanglingKept = best.Untangled.Kept;
+      result.UntanglingPath = bestPath + 1;
+    }
+    if (smooth)
+    {
+      result.SmoothingSweeps = best.Smoothed.Sweeps;
+      result.ScaledJacobianMinBeforePolish = best.Smoothed.MinBeforePolish;
+      result.PolishReleasedVertexCount = best.Smoothed.PolishReleased;
+    }
+    result.ReleasedBoundaryVertexCount = best.Released;
     result.UntanglingSeconds = untanglingSeconds;
     result.SmoothingSeconds = smoothingSeconds;
   }
@@ -651,9 +642,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   start = std::chrono::steady_clock::now();
   result.ScaledJacobian = ComputeHexScaledJacobians(mesh);
   result.HexCount = static_cast<int>(mesh.Cells.rows());
-  result.ScaledJacobianMin = result.ScaledJacobian.minCoeff();
-  result.ScaledJacobianMean = result.ScaledJacobian.mean();
-  result.InvertedHexCount = static_cast<int>((result.ScaledJacobian.array() <= 0.0).count());
+  const HexQualitySummary quality = SummarizeHexQuality(result.ScaledJacobian);
+  result.ScaledJacobianMin = quality.Min;
+  result.ScaledJacobianMean = quality.Mean;
+  result.InvertedHexCount = quality.Inverted;
   HexMeshValidity validity;
   if (checkHexMeshValidity(mesh, validity))
   {

@@ -83,6 +83,27 @@ Eigen::VectorXd ComputeHexScaledJacobians(const HexMesh& mesh)
   return result;
 }
 
+HexQualitySummary SummarizeHexQuality(const Eigen::VectorXd& quality)
+{
+  HexQualitySummary summary;
+  if (quality.size() > 0)
+  {
+    summary.Min = quality.minCoeff();
+    summary.Mean = quality.mean();
+    summary.Inverted = static_cast<int>((quality.array() <= 0.0).count());
+  }
+  return summary;
+}
+
+bool BetterHexQuality(const HexQualitySummary& quality, const HexQualitySummary& other)
+{
+  if (quality.Inverted != other.Inverted)
+  {
+    return quality.Inverted < other.Inverted;
+  }
+  return quality.Min > other.Min || (quality.Min == other.Min && quality.Mean > other.Mean);
+}
+
 double MeanHexEdgeLength(const HexMesh& mesh)
 {
   const Eigen::Index hexCount = mesh.Cells.rows();

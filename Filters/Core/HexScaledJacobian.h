@@ -60,6 +60,21 @@ double HexScaledJacobian(const HexMesh& mesh, int h);
 /// @return #H scaled Jacobians
 Eigen::VectorXd ComputeHexScaledJacobians(const HexMesh& mesh);
 
+/// The minimum, mean and inverted count of a set of scaled Jacobians.
+struct HexQualitySummary
+{
+  double Min = 0.0;
+  double Mean = 0.0;
+  int Inverted = 0; ///< values <= 0
+};
+
+/// Summary of #H scaled Jacobians (all zero when there are none).
+HexQualitySummary SummarizeHexQuality(const Eigen::VectorXd& quality);
+
+/// Whether `quality` is better than `other`: fewer inverted hexes, then a larger minimum, then a
+/// larger mean.
+bool BetterHexQuality(const HexQualitySummary& quality, const HexQualitySummary& other);
+
 /// The mean over hexes of the diagonal 0-6 over sqrt(3): about one hex edge (0 without hexes).
 double MeanHexEdgeLength(const HexMesh& mesh);
 

@@ -354,44 +354,20 @@ SolveSummary MinimiseRound(const RoundEnergy& energy,
   return summary;
 }
 
-struct Quality
+HexQualitySummary Measure(const HexMesh& mesh)
 {
-  double Min = 0.0;
-  double Mean = 0.0;
-  int Inverted = 0;
-};
-
-Quality Measure(const HexMesh& mesh)
-{
-  const Eigen::VectorXd q = ComputeHexScaledJacobians(mesh);
-  Quality quality;
-  if (q.size() > 0)
-  {
-    quality.Min = q.minCoeff();
-    quality.Mean = q.mean();
-    quality.Inverted = static_cast<int>((q.array() <= 0.0).count());
-  }
-  return quality;
+  return SummarizeHexQuality(ComputeHexScaledJacobians(mesh));
 }
 
 /// Not worse than `reference`: no more inverted hexes and no smaller minimum; or, when the
 /// reference has inverted hexes, fewer of them whatever the minimum (validity first: fertility's
 /// untangling took 143 inverted hexes to 7 and was thrown away for a minimum 0.2 lower).
-bool NoWorse(const Quality& quality, const Quality& reference)
+bool NoWorse(const HexQualitySummary& quality, const HexQualitySummary& reference)
 {
   return (quality.Inverted <= reference.Inverted && quality.Min >= reference.Min) ||
     quality.Inverted < reference.Inverted;
 }
 
-/// Better than `other`: fewer inverted hexes, then a larger minimum, then a larger mean.
-bool Better(const Quality& quality, const Quality& other)
-{
-  if (quality.Inverted != other.Inverted)
-  {
-    return quality.Inverted < other.Inverted;
-  }
-  return quality.Min > other.Min || (quality.Min == other.Min && quality.Mean > other.Mean);
-}
 } // namespace
 
 Status untangleHexMesh(HexMesh& mesh,
@@ -430,7 +406,7 @@ Status untangleHexMesh(HexMesh& mesh,
     return Status::Failure("the untangling's VolumeWeight must lie in [0, 1)");
   }
   result = HexUntanglingResult();
-  const Quality before = Measure(mesh);
+  const HexQualitySummary before = Measure(mesh);
   result.MinBefore = result.MinAfter = before.Min;
   result.MeanBefore = result.MeanAfter = before.Mean;
   result.InvertedBefore = result.InvertedAfter = before.Inverted;
@@ -556,11 +532,11 @@ Status untangleHexMesh(HexMesh& mesh,
   // The initial eps of Garanzha et al.'s code: a fifth of the worst inversion.
   double eps = std::sqrt(1e-12 + 0.04 * std::pow(std::min(minDet, 0.0), 2));
   double previousFinal = 0.0;
-  Quality plateau; // the best minimum and mean of the valid rounds so far
+  HexQualitySummary plateau; // the best minimum and mean of the valid rounds so far
   int validRounds = 0;
   Points best;
-  Quality bestQuality = before;
-  Quality last = before;
+  HexQualitySummary bestQuality = before;
+  HexQualitySummary last = before;
   // The main rounds, then a few with the boundary held where the last projection put it, so
   // that the interior settles on the boundary as it finally is.
   int mainRounds =
@@ -611,10 +587,8 @@ Status untangleHexMesh(HexMesh& mesh,
     }
     mesh.Vertices = x;
     const Eigen::VectorXd quality = ComputeHexScaledJacobians(mesh);
-    last.Min = quality.minCoeff();
-    last.Mean = quality.mean();
-    last.Inverted = static_cast<int>((quality.array() <= 0.0).count());
-    if (NoWorse(last, before) && (best.rows() == 0 || Better(last, bestQuality)))
+    last = SummarizeHexQuality(quality);
+    if (NoWorse(last, before) && (best.rows() == 0 || BetterHexQuality(last, bestQuality)))
     {
       best = x;
       bestQuality = last;
