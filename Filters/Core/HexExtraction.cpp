@@ -15,14 +15,18 @@
 #include "HexUntangling.h"
 #include "IntegerRounding.h"
 #include "PolycubeSeams.h"
+#include "ThreadCount.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 namespace polycubehex
 {
@@ -526,27 +530,23 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       cut ? gluedChart : std::vector<int>(),
       cut ? SeamVertexIdentity(static_cast<int>(original.rows()), seams) : std::vector<int>());
     // Where the untangling stops changes what the smoothing reaches, either way (rockerarm's
-    // closed form 0.402 or 0.591), so with UntanglingPaths 2 a second path whose untangling
-    // ends once its inverted count stalls is smoothed too, and the better mesh is kept. Each
-    // path has its own projection, shared by its untangling and smoothing so that the
-    // smoothing moves the vertices the untangling released the same way.
+    // closed form 0.402 or 0.591), so with UntanglingPaths 2 the untangling forks where its
+    // inverted count first stalls (HexUntanglingParameters::ForkStallRounds): the second path
+    // ends its main rounds there, both paths are smoothed, and the better mesh is kept. The
+    // paths share their rounds up to the fork; after it the second runs on a thread of its own
+    // (the smoothing is serial). Each path keeps its own projection through its untangling and
+    // smoothing, so that the smoothing moves the vertices the untangling released the same way.
     const int pathCount = untangle ? std::clamp(params.UntanglingPaths, 1, 2) : 1;
-    std::vector<std::unique_ptr<HexSurfaceProjection>> projections;
-    for (int path = 0; path < pathCount; ++path)
-    {
-      projections.push_back(std::make_unique<HexSurfaceProjection>(
-        surface, vertexCharts, mesh, params.SoftFeatureAngle));
-    }
-    // After the projections have taken their boundary from the whole mesh: the vertices a
-    // removed hex uncovers were interior and stay free (HexDoublets.h). Overlapping hexes
-    // first, as their quads hide doublets from the face count.
+    HexSurfaceProjection projection(surface, vertexCharts, mesh, params.SoftFeatureAngle);
+    // After the projection has taken its boundary from the whole mesh: the vertices a removed
+    // hex uncovers were interior and stay free (HexDoublets.h). Overlapping hexes first, as
+    // their quads hide doublets from the face count.
     if (params.RemoveDoublets)
     {
       result.RemovedDoubletHexCount = RemoveOverlappingHexes(mesh, rawQuality);
       result.RemovedDoubletHexCount +=
         RemoveBoundaryDoublets(mesh, ComputeHexScaledJacobians(mesh));
     }
-    const HexMesh unsmoothed = pathCount > 1 ? mesh : HexMesh();
     // What one path made; the better one's goes into the result.
     struct PathOutcome
     {
@@ -556,35 +556,15 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       int Released = 0;
       HexQualitySummary Quality;
     };
-    PathOutcome best;
-    int bestPath = -1;
-    double untanglingSeconds = Seconds(start); // the projections and doublets count with it
-    double smoothingSeconds = 0.0;
-    for (int path = 0; path < pathCount; ++path)
+    PathOutcome outcomes[2];
+    Status statuses[2] = { Status::Success(), Status::Success() };
+    double pathUntanglingSeconds[2] = { 0.0, 0.0 };
+    const double preparationSeconds = Seconds(start); // the projection and doublets
+    auto smoothPath = [&](PathOutcome& outcome,
+                        HexSurfaceProjection& pathProjection,
+                        Status& pathStatus,
+                        const Progress& pathProgress)
     {
-      PathOutcome outcome;
-      outcome.Mesh = path == 0 ? std::move(mesh) : unsmoothed;
-      HexSurfaceProjection& projection = *projections[static_cast<size_t>(path)];
-      const double from = 0.65 + 0.3 * path / pathCount;
-      const double width = 0.3 / pathCount;
-      auto pathStart = std::chrono::steady_clock::now();
-      if (untangle)
-      {
-        HexUntanglingParameters untangling;
-        untangling.StallRounds = path == 0 ? 0 : 2;
-        status = untangleHexMesh(outcome.Mesh,
-          projection,
-          untangling,
-          outcome.Untangled,
-          [&progress, from, width](double p)
-          { return ReportProgress(progress, from + 0.5 * width * p); });
-        if (!status)
-        {
-          return status;
-        }
-      }
-      untanglingSeconds += Seconds(pathStart);
-      pathStart = std::chrono::steady_clock::now();
       if (smooth)
       {
         HexSmoothingParameters smoothing;
@@ -596,26 +576,132 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         smoothing.PolishReleaseAngle = params.PolishReleaseAngle;
         smoothing.PolishSharpEdgeAngle = params.PolishSharpEdgeAngle;
         smoothing.MeanSearchSweeps = params.MeanSearchSweeps;
-        status = smoothHexMesh(outcome.Mesh,
-          projection,
-          smoothing,
-          outcome.Smoothed,
-          [&progress, from, width](double p)
-          { return ReportProgress(progress, from + 0.5 * width + 0.5 * width * p); });
-        if (!status)
+        pathStatus =
+          smoothHexMesh(outcome.Mesh, pathProjection, smoothing, outcome.Smoothed, pathProgress);
+        if (!pathStatus)
         {
-          return status;
+          return;
         }
       }
-      smoothingSeconds += Seconds(pathStart);
-      outcome.Released = projection.ReleasedCount();
+      outcome.Released = pathProjection.ReleasedCount();
       outcome.Quality = SummarizeHexQuality(ComputeHexScaledJacobians(outcome.Mesh));
-      if (path == 0 || BetterHexQuality(outcome.Quality, best.Quality))
+    };
+    // Progress as fractions of [from, from + width]: the first half untangles, the second
+    // smooths.
+    auto part = [](const Progress& whole, double from, double width) -> Progress
+    { return [whole, from, width](double f) { return ReportProgress(whole, from + width * f); }; };
+    auto runSecond = [&](UntanglingFork& fork, const Progress& pathProgress)
+    {
+      const auto secondStart = std::chrono::steady_clock::now();
+      statuses[1] = resumeUntangling(
+        fork, outcomes[1].Mesh, outcomes[1].Untangled, part(pathProgress, 0.0, 0.5));
+      pathUntanglingSeconds[1] = Seconds(secondStart);
+      if (statuses[1])
       {
-        best = std::move(outcome);
-        bestPath = path;
+        smoothPath(outcomes[1], *fork.Projection(), statuses[1], part(pathProgress, 0.5, 0.5));
+      }
+    };
+    // Only the calling thread reports progress (a VTK filter's progress events belong to it);
+    // the second path stops when the first is aborted or fails.
+    std::atomic<bool> cancelled{ false };
+    const Progress mainProgress = [&progress, &cancelled](double f)
+    {
+      const bool go = ReportProgress(progress, f);
+      if (!go)
+      {
+        cancelled = true;
+      }
+      return go;
+    };
+    const bool sideBySide = ThreadCount() > 1;
+    const unsigned threadCapBefore = ThreadCap;
+    bool forked = false;
+    UntanglingFork pendingFork;
+    std::thread second;
+    struct JoinOnExit
+    {
+      std::thread& Thread;
+      unsigned CapBefore;
+      ~JoinOnExit()
+      {
+        if (this->Thread.joinable())
+        {
+          this->Thread.join();
+        }
+        ThreadCap = this->CapBefore;
+      }
+    } joinOnExit{ second, threadCapBefore };
+    std::function<void(UntanglingFork&&)> onStall;
+    if (pathCount > 1)
+    {
+      onStall = [&](UntanglingFork&& fork)
+      {
+        forked = true;
+        if (sideBySide)
+        {
+          // One thread each from here: two paths of parallel loops on two cores would make
+          // every loop wait for a descheduled chunk.
+          ThreadCap = 1;
+          second = std::thread(
+            [&runSecond, &cancelled](UntanglingFork pathFork)
+            {
+              ThreadCap = 1;
+              runSecond(pathFork, [&cancelled](double) { return !cancelled.load(); });
+            },
+            std::move(fork));
+        }
+        else
+        {
+          pendingFork = std::move(fork);
+        }
+      };
+    }
+    const double mainWidth = 0.3 / pathCount;
+    outcomes[0].Mesh = std::move(mesh);
+    const auto mainStart = std::chrono::steady_clock::now();
+    if (untangle)
+    {
+      statuses[0] = untangleHexMesh(outcomes[0].Mesh,
+        projection,
+        HexUntanglingParameters(),
+        outcomes[0].Untangled,
+        part(mainProgress, 0.65, 0.5 * mainWidth),
+        onStall);
+    }
+    pathUntanglingSeconds[0] = Seconds(mainStart);
+    if (statuses[0])
+    {
+      smoothPath(
+        outcomes[0], projection, statuses[0], part(mainProgress, 0.65 + 0.5 * mainWidth, 0.5 * mainWidth));
+    }
+    if (!statuses[0])
+    {
+      cancelled = true;
+    }
+    if (second.joinable())
+    {
+      second.join();
+    }
+    ThreadCap = threadCapBefore;
+    if (statuses[0] && pendingFork.Impl)
+    {
+      runSecond(pendingFork, part(progress, 0.65 + mainWidth, mainWidth));
+    }
+    for (const Status& pathStatus : statuses)
+    {
+      if (!pathStatus)
+      {
+        return pathStatus;
       }
     }
+    const int bestPath =
+      forked && BetterHexQuality(outcomes[1].Quality, outcomes[0].Quality) ? 1 : 0;
+    PathOutcome& best = outcomes[bestPath];
+    // Wall-clock seconds: after the fork the paths run side by side.
+    const double stepSeconds = Seconds(start);
+    const double untanglingSeconds =
+      preparationSeconds + std::max(pathUntanglingSeconds[0], pathUntanglingSeconds[1]);
+    const double smoothingSeconds = std::max(0.0, stepSeconds - untanglingSeconds);
     mesh = std::move(best.Mesh);
     if (untangle)
     {

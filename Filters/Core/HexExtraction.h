@@ -87,12 +87,13 @@ struct HexExtractionParameters
   /// Jacobian of its hexes (HexSmoothingParameters::MeanSearchSweeps; default 3; 0 turns them
   /// off).
   int MeanSearchSweeps = 3;
-  /// With Smoothing and Untangling: 1 (the default) untangles and smooths once; 2 also runs a
-  /// second path whose untangling ends its main rounds once the count of inverted hexes has
-  /// set no new low for two rounds (HexUntanglingParameters::StallRounds), smooths it, and
-  /// keeps the better mesh (fewer inverted hexes, then the larger minimum, then the larger
-  /// mean), so it is never worse, for up to twice the untangling and smoothing time.
-  int UntanglingPaths = 1;
+  /// With Smoothing and Untangling: 2 (the default) forks the untangling where the count of
+  /// inverted hexes first has set no new low for two main rounds
+  /// (HexUntanglingParameters::ForkStallRounds): the second path ends its main rounds there,
+  /// both are smoothed, side by side on two threads, and the better mesh is kept (fewer
+  /// inverted hexes, then the larger minimum, then the larger mean), so it is never worse
+  /// than 1, which untangles and smooths once. An untangling that never stalls never forks.
+  int UntanglingPaths = 2;
   /// With Smoothing: a boundary vertex on a polycube edge or corner may leave it and move on
   /// the surface across its charts where the input's normals about it vary by at most this
   /// (degrees, default 20, >= 0; 0 holds every such vertex on its curve or in place).

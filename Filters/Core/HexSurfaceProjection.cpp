@@ -128,7 +128,7 @@ HexSurfaceProjection::HexSurfaceProjection(const HexSmoothingSurface& surface,
   }
   if (faceCount > 0)
   {
-    this->Grid = std::make_unique<TriangleGrid>(surface.Vertices, surface.Faces, this->CellSize);
+    this->Grid = std::make_shared<const TriangleGrid>(surface.Vertices, surface.Faces, this->CellSize);
   }
   this->ChartParent.resize(static_cast<size_t>(chartCount));
   for (int c = 0; c < chartCount; ++c)
@@ -351,6 +351,7 @@ bool HexSurfaceProjection::Smooth(const Eigen::Vector3d& p,
 }
 
 HexSurfaceProjection::~HexSurfaceProjection() = default;
+HexSurfaceProjection::HexSurfaceProjection(const HexSurfaceProjection&) = default;
 
 Eigen::Vector3d HexSurfaceProjection::Project(int v,
   const Eigen::Vector3d& p,

@@ -85,7 +85,8 @@ public:
     const HexMesh& mesh,
     double softAngle);
   ~HexSurfaceProjection();
-  HexSurfaceProjection(const HexSurfaceProjection&) = delete;
+  /// A copy shares the search grid (immutable) and releases on its own from then on.
+  HexSurfaceProjection(const HexSurfaceProjection&);
   HexSurfaceProjection& operator=(const HexSurfaceProjection&) = delete;
 
   int VertexCount() const { return static_cast<int>(this->VertexKinds.size()); }
@@ -131,7 +132,7 @@ private:
   std::vector<char> SoftFace;
   std::vector<int> VertexChart;                 ///< #V: first chart of a Surface vertex, else -1
   std::vector<std::pair<int, int>> VertexCurve; ///< #V: chart pair of a Feature vertex
-  std::unique_ptr<TriangleGrid> Grid;
+  std::shared_ptr<const TriangleGrid> Grid;
   int Released = 0;
   std::vector<Eigen::Vector3d> FaceNormal; ///< #F unit normals
   /// #F: per edge e (from corner e to e + 1), the cosine between the normals of its two

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace polycubehex
 {
@@ -368,7 +369,340 @@ bool NoWorse(const HexQualitySummary& quality, const HexQualitySummary& referenc
     quality.Inverted < reference.Inverted;
 }
 
+
+/// What every path of one untangling shares and never changes.
+struct UntanglingSetup
+{
+  Hexes Cells;
+  std::vector<int> IncidenceStart; ///< per vertex, into Incidence
+  std::vector<int> Incidence;      ///< 8 h + k for corner k of hex h, per vertex in hex order
+  std::vector<double> InverseSize; ///< per hex: 1 / its mean edge length
+  double Edge = 0.0;               ///< mean hex edge length
+  Points Start;                    ///< the input positions
+  HexQualitySummary Before;        ///< the input's quality
+};
+
+/// Where one path of rounds stands; a fork copies it.
+struct RoundState
+{
+  Points X;
+  std::vector<int> Dofs;
+  std::vector<Eigen::Matrix3d> Bases;
+  double Eps = 0.0;
+  double PreviousFinal = 0.0;
+  HexQualitySummary Plateau; // the best minimum and mean of the valid rounds so far
+  int ValidRounds = 0;
+  Points Best;
+  HexQualitySummary BestQuality;
+  HexQualitySummary Last;
+  int Round = 0;
+  int MainRounds = 0;
+  int TotalRounds = 0;
+  bool CurvesReleased = false;
+  int FewestInverted = std::numeric_limits<int>::max();
+  int RoundsWithoutFewer = 0;
+  int Iterations = 0;
+  int RoundsRun = 0;
+  /// A fork happens between a round's solve and the decisions after it: the resumed path
+  /// starts with those decisions, on this round's quality and solve.
+  bool MidRound = false;
+  Eigen::VectorXd Quality;
+  SolveSummary Summary;
+};
+
 } // namespace
+
+/// A path's rounds as they stood at the fork, with their own projection.
+struct UntanglingFork::Data
+{
+  std::shared_ptr<const UntanglingSetup> Setup;
+  RoundState State;
+  std::unique_ptr<HexSurfaceProjection> Projection;
+  HexUntanglingParameters Params;
+};
+
+namespace
+{
+
+/// Runs the rounds of one path from `state` to the end.
+Status RunRounds(const std::shared_ptr<const UntanglingSetup>& shared,
+  HexSurfaceProjection& projection,
+  const HexUntanglingParameters& params,
+  RoundState& s,
+  const Progress& progress,
+  const std::function<void(UntanglingFork&&)>& onStall)
+{
+  const UntanglingSetup& setup = *shared;
+  const int vertexCount = static_cast<int>(setup.Start.rows());
+  const int hexCount = static_cast<int>(setup.Cells.rows());
+  RoundEnergy energy(
+    setup.Cells, setup.InverseSize, setup.IncidenceStart, setup.Incidence, params.VolumeWeight);
+  // The free coordinates at X: 3 inside, 2 in a Surface vertex's tangent plane, 1 along a
+  // Feature vertex's curve, none for a fixed vertex.
+  auto setFrames = [&]()
+  {
+    for (int v = 0; v < vertexCount; ++v)
+    {
+      const size_t i = static_cast<size_t>(v);
+      const HexVertexKind kind = projection.Kind(v);
+      s.Dofs[i] = kind == HexVertexKind::Interior ? 3 : 0;
+      if (kind != HexVertexKind::Surface && kind != HexVertexKind::Feature)
+      {
+        continue;
+      }
+      Eigen::Vector3d direction;
+      projection.Project(v, s.X.row(v).transpose(), &direction);
+      if (direction.squaredNorm() == 0.0)
+      {
+        continue;
+      }
+      if (kind == HexVertexKind::Feature)
+      {
+        s.Bases[i].col(0) = direction;
+        s.Dofs[i] = 1;
+        continue;
+      }
+      // Any orthonormal pair across the normal spans the tangent plane.
+      int axis = 0;
+      direction.cwiseAbs().minCoeff(&axis);
+      const Eigen::Vector3d u = direction.cross(Eigen::Vector3d::Unit(axis)).normalized();
+      s.Bases[i].col(0) = u;
+      s.Bases[i].col(1) = direction.cross(u);
+      s.Dofs[i] = 2;
+    }
+  };
+  // Releases the corner vertices of the hexes below ReleaseBelow: where the charts force a flat
+  // or inverted corner, quality wins over the corner. Curve vertices stay on their curves (one
+  // released from a crease lets the padding layer pull away from it: bunny's base, 3x the
+  // Hausdorff distance).
+  auto release = [&](const Eigen::VectorXd& quality, bool releaseCurves)
+  {
+    int count = 0;
+    for (int h = 0; h < hexCount; ++h)
+    {
+      const bool curves = releaseCurves && quality[h] < params.ReleaseCurvesBelow;
+      if (quality[h] >= params.ReleaseBelow && !curves)
+      {
+        continue;
+      }
+      for (int k = 0; k < 8; ++k)
+      {
+        const int v = setup.Cells(h, k);
+        if ((projection.Kind(v) == HexVertexKind::Fixed && quality[h] < params.ReleaseBelow) ||
+          (projection.Kind(v) == HexVertexKind::Feature && curves))
+        {
+          count += projection.Release(v, s.X.row(v).transpose()) ? 1 : 0;
+        }
+      }
+    }
+    return count;
+  };
+
+  HexMesh measured;
+  measured.Cells = setup.Cells;
+  std::vector<double> y;
+  double minDet = 0.0;
+  bool forked = false;
+  for (; s.Round < s.TotalRounds; ++s.Round)
+  {
+    const int round = s.Round;
+    const bool polish = round >= s.MainRounds;
+    if (!s.MidRound)
+    {
+      setFrames();
+      if (polish)
+      {
+        for (int v = 0; v < vertexCount; ++v)
+        {
+          if (projection.Kind(v) != HexVertexKind::Interior)
+          {
+            s.Dofs[static_cast<size_t>(v)] = 0;
+          }
+        }
+      }
+      energy.Start(s.X, s.Dofs, s.Bases, s.Eps);
+      y.assign(static_cast<size_t>(energy.Parameters()), 0.0);
+      s.Summary = MinimiseRound(energy,
+        y,
+        std::max(1, params.IterationsPerRound),
+        0.25 * setup.Edge,
+        progress,
+        static_cast<double>(round) / s.TotalRounds);
+      if (s.Summary.Aborted)
+      {
+        return Status::Failure("hex untangling aborted");
+      }
+      s.Iterations += s.Summary.Iterations;
+      ++s.RoundsRun;
+
+      // Back onto the surface, then measured.
+      energy.Positions(y.data(), s.X);
+      for (int v = 0; v < vertexCount; ++v)
+      {
+        const HexVertexKind kind = projection.Kind(v);
+        if (kind == HexVertexKind::Surface || kind == HexVertexKind::Feature)
+        {
+          s.X.row(v) = projection.Project(v, s.X.row(v).transpose()).transpose();
+        }
+      }
+      measured.Vertices = s.X;
+      s.Quality = ComputeHexScaledJacobians(measured);
+      s.Last = SummarizeHexQuality(s.Quality);
+      if (NoWorse(s.Last, setup.Before) &&
+        (s.Best.rows() == 0 || BetterHexQuality(s.Last, s.BestQuality)))
+      {
+        s.Best = s.X;
+        s.BestQuality = s.Last;
+      }
+      if (!polish)
+      {
+        s.RoundsWithoutFewer = s.Last.Inverted < s.FewestInverted ? 0 : s.RoundsWithoutFewer + 1;
+        s.FewestInverted = std::min(s.FewestInverted, s.Last.Inverted);
+      }
+      // The first main round at which the inverted count has set no new low for
+      // ForkStallRounds: a second path that ends its main rounds here goes its own way.
+      if (onStall && !forked && !polish && s.Last.Inverted > 0 && params.ForkStallRounds > 0 &&
+        s.RoundsWithoutFewer >= params.ForkStallRounds)
+      {
+        forked = true;
+        UntanglingFork fork;
+        fork.Impl = std::make_unique<UntanglingFork::Data>();
+        fork.Impl->Setup = shared;
+        fork.Impl->State = s;
+        fork.Impl->State.MidRound = true;
+        fork.Impl->Projection = std::make_unique<HexSurfaceProjection>(projection);
+        fork.Impl->Params = params;
+        fork.Impl->Params.StallRounds = params.ForkStallRounds;
+        onStall(std::move(fork));
+      }
+    }
+    s.MidRound = false;
+
+    // The last main round leaving hexes inverted: their curve vertices give way too, and a
+    // few more rounds follow (once).
+    // Or a main round when the count of inverted hexes has set no new low for StallRounds.
+    const bool invertedStalled = !polish && s.Last.Inverted > 0 && params.StallRounds > 0 &&
+      s.RoundsWithoutFewer >= params.StallRounds;
+    const bool lastChance = !polish && !s.CurvesReleased && s.Last.Inverted > 0 &&
+      (round + 1 >= s.MainRounds || invertedStalled) && params.ReleaseCurvesBelow > -1.0 &&
+      params.CurveRounds > 0;
+    const int released = polish ? 0 : release(s.Quality, lastChance);
+    if (lastChance)
+    {
+      s.CurvesReleased = true;
+      s.MainRounds = round + 1 + params.CurveRounds;
+      s.TotalRounds = s.MainRounds + std::max(0, params.FinalRounds);
+      s.FewestInverted = std::numeric_limits<int>::max();
+      s.RoundsWithoutFewer = 0;
+    }
+    else if (invertedStalled)
+    {
+      s.MainRounds = round + 1; // the final rounds next
+      s.TotalRounds = s.MainRounds + std::max(0, params.FinalRounds);
+    }
+
+    // Converged once nothing is inverted, nothing was released and neither this round nor the
+    // projection after the last one changed much (the projection undoes a little of every
+    // round's sliding).
+    energy.Start(s.X, s.Dofs, s.Bases, s.Eps);
+    y.assign(static_cast<size_t>(energy.Parameters()), 0.0);
+    energy.Evaluate(y.data(), nullptr, minDet);
+    const double final = s.Summary.Final;
+    const double decrease =
+      s.Summary.Initial > 0.0 ? (s.Summary.Initial - final) / s.Summary.Initial : 0.0;
+    const bool settled =
+      round > 0 && s.PreviousFinal - final < params.Tolerance * std::fabs(final);
+    s.PreviousFinal = final;
+    // Or once a valid mesh stops getting better: a minimum held by the structure (a padded
+    // concave corner) does not move, and the mean creeps.
+    bool stalled = false;
+    if (s.Last.Inverted == 0)
+    {
+      stalled = s.ValidRounds > 0 && s.Last.Min < s.Plateau.Min + 0.01 &&
+        s.Last.Mean < s.Plateau.Mean + 0.001;
+      if (s.ValidRounds == 0 || s.Last.Min > s.Plateau.Min)
+      {
+        s.Plateau.Min = s.Last.Min;
+      }
+      s.Plateau.Mean = std::max(s.Plateau.Mean, s.Last.Mean);
+      ++s.ValidRounds;
+    }
+    if (minDet > 0.0 && released == 0 && (decrease < params.Tolerance || settled || stalled))
+    {
+      if (polish || params.FinalRounds <= 0)
+      {
+        break;
+      }
+      // Converged with the boundary free: go on to the final rounds.
+      s.MainRounds = round + 1;
+      s.TotalRounds = s.MainRounds + params.FinalRounds;
+    }
+    // The next eps (Garanzha et al. 2021): from the energy decrease and the smallest
+    // determinant after the projection.
+    const double sigma = std::max(decrease, 0.1);
+    double chi = 0.0;
+    double chiPrime = 0.0;
+    Chi(minDet, s.Eps, chi, chiPrime);
+    const double mu = (1.0 - sigma) * chi;
+    s.Eps = minDet < mu ? 2.0 * std::sqrt(mu * (mu - minDet)) : 1e-10;
+  }
+  return Status::Success();
+}
+
+/// Keeps the last round when it is no worse than the input, else the best round that is
+/// (fewest inverted, then the largest minimum), else the input. (Keeping the best round over
+/// a last one with more inverted hexes cost bunny 0.1 of minimum and 4e-3 of Hausdorff
+/// distance after the smoothing, which mends the few the last round leaves.)
+void KeepBest(const UntanglingSetup& setup,
+  const RoundState& s,
+  const HexSurfaceProjection& projection,
+  HexMesh& mesh,
+  HexUntanglingResult& result)
+{
+  HexQualitySummary kept = s.Last;
+  if (NoWorse(s.Last, setup.Before))
+  {
+    mesh.Vertices = s.X;
+    result.Kept = true;
+  }
+  else if (s.Best.rows() > 0)
+  {
+    mesh.Vertices = s.Best;
+    kept = s.BestQuality;
+    result.Kept = true;
+  }
+  else
+  {
+    mesh.Vertices = setup.Start;
+    kept = setup.Before;
+  }
+  result.MinAfter = kept.Min;
+  result.MeanAfter = kept.Mean;
+  result.InvertedAfter = kept.Inverted;
+  result.Rounds = s.RoundsRun;
+  result.Iterations = s.Iterations;
+  result.ReleasedVertices = projection.ReleasedCount();
+}
+
+void StartResult(const HexQualitySummary& before, HexUntanglingResult& result)
+{
+  result = HexUntanglingResult();
+  result.MinBefore = result.MinAfter = before.Min;
+  result.MeanBefore = result.MeanAfter = before.Mean;
+  result.InvertedBefore = result.InvertedAfter = before.Inverted;
+}
+
+} // namespace
+
+UntanglingFork::UntanglingFork() = default;
+UntanglingFork::~UntanglingFork() = default;
+UntanglingFork::UntanglingFork(UntanglingFork&&) noexcept = default;
+UntanglingFork& UntanglingFork::operator=(UntanglingFork&&) noexcept = default;
+
+HexSurfaceProjection* UntanglingFork::Projection() const
+{
+  return this->Impl ? this->Impl->Projection.get() : nullptr;
+}
 
 Status untangleHexMesh(HexMesh& mesh,
   const std::vector<std::vector<int>>& vertexCharts,
@@ -393,7 +727,8 @@ Status untangleHexMesh(HexMesh& mesh,
   HexSurfaceProjection& projection,
   const HexUntanglingParameters& params,
   HexUntanglingResult& result,
-  const Progress& progress)
+  const Progress& progress,
+  const std::function<void(UntanglingFork&&)>& onStall)
 {
   const int vertexCount = static_cast<int>(mesh.Vertices.rows());
   const int hexCount = static_cast<int>(mesh.Cells.rows());
@@ -405,46 +740,48 @@ Status untangleHexMesh(HexMesh& mesh,
   {
     return Status::Failure("the untangling's VolumeWeight must lie in [0, 1)");
   }
-  result = HexUntanglingResult();
-  const HexQualitySummary before = Measure(mesh);
-  result.MinBefore = result.MinAfter = before.Min;
-  result.MeanBefore = result.MeanAfter = before.Mean;
-  result.InvertedBefore = result.InvertedAfter = before.Inverted;
-  const int releasedBefore = projection.ReleasedCount();
-  result.ReleasedVertices = releasedBefore;
+  auto shared = std::make_shared<UntanglingSetup>();
+  UntanglingSetup& setup = *shared;
+  setup.Before = Measure(mesh);
+  StartResult(setup.Before, result);
+  result.ReleasedVertices = projection.ReleasedCount();
   if (hexCount == 0 || params.MaxRounds <= 0)
   {
     return Status::Success();
   }
+  setup.Cells = mesh.Cells;
+  setup.Start = mesh.Vertices;
 
   // Incidence: 8 h + k for corner k of hex h, per vertex in hex order.
-  std::vector<int> incidenceStart(static_cast<size_t>(vertexCount) + 1, 0);
+  setup.IncidenceStart.assign(static_cast<size_t>(vertexCount) + 1, 0);
   for (int h = 0; h < hexCount; ++h)
   {
     for (int k = 0; k < 8; ++k)
     {
-      ++incidenceStart[static_cast<size_t>(mesh.Cells(h, k)) + 1];
+      ++setup.IncidenceStart[static_cast<size_t>(mesh.Cells(h, k)) + 1];
     }
   }
   for (int v = 0; v < vertexCount; ++v)
   {
-    incidenceStart[static_cast<size_t>(v) + 1] += incidenceStart[static_cast<size_t>(v)];
+    setup.IncidenceStart[static_cast<size_t>(v) + 1] +=
+      setup.IncidenceStart[static_cast<size_t>(v)];
   }
-  std::vector<int> incidence(static_cast<size_t>(incidenceStart.back()));
+  setup.Incidence.resize(static_cast<size_t>(setup.IncidenceStart.back()));
   {
-    std::vector<int> fill(incidenceStart.begin(), incidenceStart.end() - 1);
+    std::vector<int> fill(setup.IncidenceStart.begin(), setup.IncidenceStart.end() - 1);
     for (int h = 0; h < hexCount; ++h)
     {
       for (int k = 0; k < 8; ++k)
       {
-        incidence[static_cast<size_t>(fill[static_cast<size_t>(mesh.Cells(h, k))]++)] = 8 * h + k;
+        setup.Incidence[static_cast<size_t>(fill[static_cast<size_t>(mesh.Cells(h, k))]++)] =
+          8 * h + k;
       }
     }
   }
 
   // Each hex's Jacobians are measured against a cube of its own mean edge length, which an
   // inverted hex still has.
-  std::vector<double> inverseSize(static_cast<size_t>(hexCount));
+  setup.InverseSize.resize(static_cast<size_t>(hexCount));
   for (int h = 0; h < hexCount; ++h)
   {
     double length = 0.0;
@@ -455,241 +792,62 @@ Status untangleHexMesh(HexMesh& mesh,
           .norm() /
         12.0;
     }
-    inverseSize[static_cast<size_t>(h)] = length > 0.0 ? 1.0 / length : 1.0;
+    setup.InverseSize[static_cast<size_t>(h)] = length > 0.0 ? 1.0 / length : 1.0;
   }
-  const double edge = MeanHexEdgeLength(mesh);
+  setup.Edge = MeanHexEdgeLength(mesh);
 
-  RoundEnergy energy(mesh.Cells, inverseSize, incidenceStart, incidence, params.VolumeWeight);
-  const Points start = mesh.Vertices;
-  Points x = mesh.Vertices;
-  std::vector<int> dofs(static_cast<size_t>(vertexCount), 0);
-  std::vector<Eigen::Matrix3d> bases(static_cast<size_t>(vertexCount), Eigen::Matrix3d::Identity());
-  // The free coordinates at x: 3 inside, 2 in a Surface vertex's tangent plane, 1 along a
-  // Feature vertex's curve, none for a fixed vertex.
-  auto setFrames = [&]()
+  RoundState state;
+  state.X = mesh.Vertices;
+  state.Dofs.assign(static_cast<size_t>(vertexCount), 0);
+  state.Bases.assign(static_cast<size_t>(vertexCount), Eigen::Matrix3d::Identity());
   {
-    for (int v = 0; v < vertexCount; ++v)
-    {
-      const size_t i = static_cast<size_t>(v);
-      const HexVertexKind kind = projection.Kind(v);
-      dofs[i] = kind == HexVertexKind::Interior ? 3 : 0;
-      if (kind != HexVertexKind::Surface && kind != HexVertexKind::Feature)
-      {
-        continue;
-      }
-      Eigen::Vector3d direction;
-      projection.Project(v, x.row(v).transpose(), &direction);
-      if (direction.squaredNorm() == 0.0)
-      {
-        continue;
-      }
-      if (kind == HexVertexKind::Feature)
-      {
-        bases[i].col(0) = direction;
-        dofs[i] = 1;
-        continue;
-      }
-      // Any orthonormal pair across the normal spans the tangent plane.
-      int axis = 0;
-      direction.cwiseAbs().minCoeff(&axis);
-      const Eigen::Vector3d u = direction.cross(Eigen::Vector3d::Unit(axis)).normalized();
-      bases[i].col(0) = u;
-      bases[i].col(1) = direction.cross(u);
-      dofs[i] = 2;
-    }
-  };
-  // Releases the corner vertices of the hexes below ReleaseBelow: where the charts force a flat
-  // or inverted corner, quality wins over the corner. Curve vertices stay on their curves (one
-  // released from a crease lets the padding layer pull away from it: bunny's base, 3x the
-  // Hausdorff distance).
-  auto release = [&](const Eigen::VectorXd& quality, bool releaseCurves)
-  {
-    int count = 0;
-    for (int h = 0; h < hexCount; ++h)
-    {
-      const bool curves = releaseCurves && quality[h] < params.ReleaseCurvesBelow;
-      if (quality[h] >= params.ReleaseBelow && !curves)
-      {
-        continue;
-      }
-      for (int k = 0; k < 8; ++k)
-      {
-        const int v = mesh.Cells(h, k);
-        if ((projection.Kind(v) == HexVertexKind::Fixed && quality[h] < params.ReleaseBelow) ||
-          (projection.Kind(v) == HexVertexKind::Feature && curves))
-        {
-          count += projection.Release(v, x.row(v).transpose()) ? 1 : 0;
-        }
-      }
-    }
-    return count;
-  };
-
-  std::vector<double> y;
-  double minDet = 0.0;
-  energy.Start(x, dofs, bases, 1.0);
-  energy.Evaluate(y.data(), nullptr, minDet);
-  // The initial eps of Garanzha et al.'s code: a fifth of the worst inversion.
-  double eps = std::sqrt(1e-12 + 0.04 * std::pow(std::min(minDet, 0.0), 2));
-  double previousFinal = 0.0;
-  HexQualitySummary plateau; // the best minimum and mean of the valid rounds so far
-  int validRounds = 0;
-  Points best;
-  HexQualitySummary bestQuality = before;
-  HexQualitySummary last = before;
+    // The initial eps of Garanzha et al.'s code: a fifth of the worst inversion.
+    RoundEnergy energy(
+      setup.Cells, setup.InverseSize, setup.IncidenceStart, setup.Incidence, params.VolumeWeight);
+    energy.Start(state.X, state.Dofs, state.Bases, 1.0);
+    double minDet = 0.0;
+    energy.Evaluate(nullptr, nullptr, minDet);
+    state.Eps = std::sqrt(1e-12 + 0.04 * std::pow(std::min(minDet, 0.0), 2));
+  }
+  state.BestQuality = setup.Before;
+  state.Last = setup.Before;
   // The main rounds, then a few with the boundary held where the last projection put it, so
   // that the interior settles on the boundary as it finally is.
-  int mainRounds =
-    before.Inverted == 0 ? std::min(params.MaxRounds, params.MaxRoundsValid) : params.MaxRounds;
-  int totalRounds = mainRounds + std::max(0, params.FinalRounds);
-  bool curvesReleased = false;
-  int fewestInverted = std::numeric_limits<int>::max();
-  int roundsWithoutFewer = 0;
-  for (int round = 0; round < totalRounds; ++round)
+  state.MainRounds = setup.Before.Inverted == 0
+    ? std::min(params.MaxRounds, params.MaxRoundsValid)
+    : params.MaxRounds;
+  state.TotalRounds = state.MainRounds + std::max(0, params.FinalRounds);
+  const Status status = RunRounds(shared, projection, params, state, progress, onStall);
+  if (!status)
   {
-    const bool polish = round >= mainRounds;
-    setFrames();
-    if (polish)
-    {
-      for (int v = 0; v < vertexCount; ++v)
-      {
-        if (projection.Kind(v) != HexVertexKind::Interior)
-        {
-          dofs[static_cast<size_t>(v)] = 0;
-        }
-      }
-    }
-    energy.Start(x, dofs, bases, eps);
-    y.assign(static_cast<size_t>(energy.Parameters()), 0.0);
-    const SolveSummary summary = MinimiseRound(energy,
-      y,
-      std::max(1, params.IterationsPerRound),
-      0.25 * edge,
-      progress,
-      static_cast<double>(round) / totalRounds);
-    if (summary.Aborted)
-    {
-      mesh.Vertices = start;
-      return Status::Failure("hex untangling aborted");
-    }
-    result.Iterations += summary.Iterations;
-    ++result.Rounds;
+    mesh.Vertices = setup.Start;
+    return status;
+  }
+  KeepBest(setup, state, projection, mesh, result);
+  ReportProgress(progress, 1.0);
+  return Status::Success();
+}
 
-    // Back onto the surface, then measured.
-    energy.Positions(y.data(), x);
-    for (int v = 0; v < vertexCount; ++v)
-    {
-      const HexVertexKind kind = projection.Kind(v);
-      if (kind == HexVertexKind::Surface || kind == HexVertexKind::Feature)
-      {
-        x.row(v) = projection.Project(v, x.row(v).transpose()).transpose();
-      }
-    }
-    mesh.Vertices = x;
-    const Eigen::VectorXd quality = ComputeHexScaledJacobians(mesh);
-    last = SummarizeHexQuality(quality);
-    if (NoWorse(last, before) && (best.rows() == 0 || BetterHexQuality(last, bestQuality)))
-    {
-      best = x;
-      bestQuality = last;
-    }
-    // The last main round leaving hexes inverted: their curve vertices give way too, and a
-    // few more rounds follow (once).
-    // Or a main round when the count of inverted hexes has set no new low for StallRounds.
-    if (!polish)
-    {
-      roundsWithoutFewer = last.Inverted < fewestInverted ? 0 : roundsWithoutFewer + 1;
-      fewestInverted = std::min(fewestInverted, last.Inverted);
-    }
-    const bool invertedStalled = !polish && last.Inverted > 0 && params.StallRounds > 0 &&
-      roundsWithoutFewer >= params.StallRounds;
-    const bool lastChance = !polish && !curvesReleased && last.Inverted > 0 &&
-      (round + 1 >= mainRounds || invertedStalled) && params.ReleaseCurvesBelow > -1.0 &&
-      params.CurveRounds > 0;
-    const int released = polish ? 0 : release(quality, lastChance);
-    if (lastChance)
-    {
-      curvesReleased = true;
-      mainRounds = round + 1 + params.CurveRounds;
-      totalRounds = mainRounds + std::max(0, params.FinalRounds);
-      fewestInverted = std::numeric_limits<int>::max();
-      roundsWithoutFewer = 0;
-    }
-    else if (invertedStalled)
-    {
-      mainRounds = round + 1; // the final rounds next
-      totalRounds = mainRounds + std::max(0, params.FinalRounds);
-    }
-
-    // Converged once nothing is inverted, nothing was released and neither this round nor the
-    // projection after the last one changed much (the projection undoes a little of every
-    // round's sliding).
-    energy.Start(x, dofs, bases, eps);
-    y.assign(static_cast<size_t>(energy.Parameters()), 0.0);
-    energy.Evaluate(y.data(), nullptr, minDet);
-    const double final = summary.Final;
-    const double decrease =
-      summary.Initial > 0.0 ? (summary.Initial - final) / summary.Initial : 0.0;
-    const bool settled = round > 0 && previousFinal - final < params.Tolerance * std::fabs(final);
-    previousFinal = final;
-    // Or once a valid mesh stops getting better: a minimum held by the structure (a padded
-    // concave corner) does not move, and the mean creeps.
-    bool stalled = false;
-    if (last.Inverted == 0)
-    {
-      stalled =
-        validRounds > 0 && last.Min < plateau.Min + 0.01 && last.Mean < plateau.Mean + 0.001;
-      if (validRounds == 0 || last.Min > plateau.Min)
-      {
-        plateau.Min = last.Min;
-      }
-      plateau.Mean = std::max(plateau.Mean, last.Mean);
-      ++validRounds;
-    }
-    if (minDet > 0.0 && released == 0 && (decrease < params.Tolerance || settled || stalled))
-    {
-      if (polish || params.FinalRounds <= 0)
-      {
-        break;
-      }
-      // Converged with the boundary free: go on to the final rounds.
-      mainRounds = round + 1;
-      totalRounds = mainRounds + params.FinalRounds;
-    }
-    // The next eps (Garanzha et al. 2021): from the energy decrease and the smallest
-    // determinant after the projection.
-    const double sigma = std::max(decrease, 0.1);
-    double chi = 0.0;
-    double chiPrime = 0.0;
-    Chi(minDet, eps, chi, chiPrime);
-    const double mu = (1.0 - sigma) * chi;
-    eps = minDet < mu ? 2.0 * std::sqrt(mu * (mu - minDet)) : 1e-10;
-  }
-
-  // Keep the last round when it is no worse than the input, else the best round that is
-  // (fewest inverted, then the largest minimum), else the input. (Keeping the best round over
-  // a last one with more inverted hexes cost bunny 0.1 of minimum and 4e-3 of Hausdorff
-  // distance after the smoothing, which mends the few the last round leaves.)
-  if (NoWorse(last, before))
+Status resumeUntangling(UntanglingFork& fork,
+  HexMesh& mesh,
+  HexUntanglingResult& result,
+  const Progress& progress)
+{
+  if (!fork.Impl)
   {
-    mesh.Vertices = x;
-    result.Kept = true;
+    return Status::Failure("resumeUntangling needs a fork");
   }
-  else if (best.rows() > 0)
+  UntanglingFork::Data& data = *fork.Impl;
+  StartResult(data.Setup->Before, result);
+  mesh.Cells = data.Setup->Cells;
+  const Status status =
+    RunRounds(data.Setup, *data.Projection, data.Params, data.State, progress, {});
+  if (!status)
   {
-    mesh.Vertices = best;
-    last = bestQuality;
-    result.Kept = true;
+    mesh.Vertices = data.Setup->Start;
+    return status;
   }
-  else
-  {
-    mesh.Vertices = start;
-    last = before;
-  }
-  result.MinAfter = last.Min;
-  result.MeanAfter = last.Mean;
-  result.InvertedAfter = last.Inverted;
-  result.ReleasedVertices = projection.ReleasedCount();
+  KeepBest(*data.Setup, data.State, *data.Projection, mesh, result);
   ReportProgress(progress, 1.0);
   return Status::Success();
 }

@@ -31,6 +31,8 @@
 #include "MeshTypes.h"
 #include "Status.h"
 
+#include <functional>
+#include <memory>
 #include <vector>
 
 namespace polycubehex
@@ -81,6 +83,12 @@ struct HexUntanglingParameters
   /// then the final rounds); 0 (the default) runs them all. Where the untangling stops changes
   /// what the smoothing reaches, either way (HexExtractionParameters::UntanglingPaths).
   int StallRounds = 0;
+  /// With an onStall callback (untangleHexMesh), the first main round at which the count of
+  /// inverted hexes has set no new low for this many rounds forks the untangling (default 2,
+  /// 0 never): the callback receives a copy of the rounds there, which resumeUntangling
+  /// finishes as a run with StallRounds = ForkStallRounds would, while this run goes on. The
+  /// two paths share their rounds up to the fork, so the second costs only its own.
+  int ForkStallRounds = 2;
 };
 
 /// What the step did.
@@ -100,6 +108,23 @@ struct HexUntanglingResult
   bool Kept = false;
 };
 
+/// A second path of the untangling, split off where the inverted count stalled
+/// (HexUntanglingParameters::ForkStallRounds); resumeUntangling runs it. Movable, not copyable.
+class UntanglingFork
+{
+public:
+  UntanglingFork();
+  ~UntanglingFork();
+  UntanglingFork(UntanglingFork&&) noexcept;
+  UntanglingFork& operator=(UntanglingFork&&) noexcept;
+  /// The path's own projection, with the releases of its rounds (for the smoothing after it);
+  /// null for an empty fork.
+  HexSurfaceProjection* Projection() const;
+
+  struct Data;
+  std::unique_ptr<Data> Impl;
+};
+
 /// Untangles and optimises `mesh` in place.
 /// @param mesh          #V by 3 positions, #H by 8 hexes in VTK order
 /// @param vertexCharts  #V: sorted charts each vertex lies on (empty for interior vertices)
@@ -114,10 +139,20 @@ Status untangleHexMesh(HexMesh& mesh,
 
 /// The same with the boundary vertices' kinds and projections given (params.SoftFeatureAngle
 /// is then unused); the vertices the untangling releases stay released in `projection`, so
-/// that a smoothing after it (smoothHexMesh) moves them the same way.
+/// that a smoothing after it (smoothHexMesh) moves them the same way. When `onStall` is set, it
+/// is called once, on this thread, with the fork of ForkStallRounds (if the rounds get there);
+/// it may hand the fork to another thread, as the fork shares nothing mutable with this run.
 Status untangleHexMesh(HexMesh& mesh,
   HexSurfaceProjection& projection,
   const HexUntanglingParameters& params,
+  HexUntanglingResult& result,
+  const Progress& progress = {},
+  const std::function<void(UntanglingFork&&)>& onStall = {});
+
+/// Runs the rest of a fork's rounds: `mesh` receives its hexes and the kept positions, `result`
+/// counts the rounds and iterations of the whole path, the shared ones too.
+Status resumeUntangling(UntanglingFork& fork,
+  HexMesh& mesh,
   HexUntanglingResult& result,
   const Progress& progress = {});
 

@@ -13,17 +13,22 @@
 namespace polycubehex
 {
 
+/// A cap on ThreadCount() for the calling thread alone (0, the default: none), for work that
+/// runs beside other work of its own (the hex extraction's second untangling path).
+inline thread_local unsigned ThreadCap = 0;
+
 inline unsigned ThreadCount()
 {
+  unsigned count = std::max(1u, std::thread::hardware_concurrency());
   if (const char* value = std::getenv("POLYCUBEHEX_THREADS"))
   {
     const int requested = std::atoi(value);
     if (requested > 0)
     {
-      return static_cast<unsigned>(requested);
+      count = static_cast<unsigned>(requested);
     }
   }
-  return std::max(1u, std::thread::hardware_concurrency());
+  return ThreadCap > 0 ? std::min(count, ThreadCap) : count;
 }
 
 /// Runs body(begin, end) over [0, count) in contiguous chunks of at least `grain` items, one

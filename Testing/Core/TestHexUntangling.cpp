@@ -2,7 +2,7 @@
 // untangleHexMesh on a cube lattice whose charts are the cube's six faces: a few interior, face
 // and edge vertices pushed through their neighbours are untangled, boundary vertices stay on
 // the cube's surface, corners do not move; a perfect lattice stays perfect; one or two threads
-// give the same bits.
+// give the same bits; a fork where the inverted count stalls is the run that stops there.
 #include "HexPadding.h"
 #include "HexScaledJacobian.h"
 #include "HexUntangling.h"
@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <random>
+#include <thread>
 #include <vector>
 
 using namespace polycubehex;
@@ -160,6 +161,80 @@ void TestStallEndsRounds()
     HexUntanglingParameters().MaxRounds + HexUntanglingParameters().FinalRounds);
 }
 
+/// The same pushed corner with a fork where the inverted count stalls: the main run is the run
+/// without a fork, bit for bit, and the resumed fork is the run with StallRounds 2, bit for bit,
+/// also when it finishes on another thread after the main run has moved on.
+void TestForkIsTheStalledRun()
+{
+  auto pushed = []()
+  {
+    Lattice lattice = MakeLattice(4);
+    lattice.Mesh.Vertices.row(lattice.Id(0, 0, 0)) = Eigen::RowVector3d(0.4, 0.4, 0.4);
+    return lattice;
+  };
+  HexUntanglingParameters params;
+  params.ReleaseBelow = -1.0;
+  params.ReleaseCurvesBelow = -1.0;
+  HexUntanglingParameters stalled = params;
+  stalled.StallRounds = 2;
+  Lattice plain = pushed();
+  Lattice early = pushed();
+  HexUntanglingResult plainResult;
+  HexUntanglingResult earlyResult;
+  PCH_CHECK(untangleHexMesh(plain.Mesh, plain.VertexCharts, plain.Surface, params, plainResult));
+  PCH_CHECK(untangleHexMesh(early.Mesh, early.VertexCharts, early.Surface, stalled, earlyResult));
+
+  Lattice main = pushed();
+  HexSurfaceProjection projection(main.Surface, main.VertexCharts, main.Mesh, params.SoftFeatureAngle);
+  int forks = 0;
+  UntanglingFork kept;
+  HexUntanglingResult mainResult;
+  PCH_CHECK(untangleHexMesh(main.Mesh,
+    projection,
+    params,
+    mainResult,
+    {},
+    [&forks, &kept](UntanglingFork&& fork)
+    {
+      ++forks;
+      kept = std::move(fork);
+    }));
+  PCH_CHECK(forks == 1);
+  PCH_CHECK(kept.Projection() != nullptr && kept.Projection() != &projection);
+  PCH_CHECK(main.Mesh.Vertices == plain.Mesh.Vertices);
+  PCH_CHECK(mainResult.Rounds == plainResult.Rounds);
+  HexMesh resumed;
+  HexUntanglingResult resumedResult;
+  std::thread other([&]() { PCH_CHECK(resumeUntangling(kept, resumed, resumedResult)); });
+  other.join();
+  std::cout << "fork: main " << mainResult.Rounds << " rounds, fork " << resumedResult.Rounds
+            << " rounds (the run with StallRounds 2: " << earlyResult.Rounds << ")" << std::endl;
+  PCH_CHECK(resumed.Cells == early.Mesh.Cells);
+  PCH_CHECK(resumed.Vertices == early.Mesh.Vertices);
+  PCH_CHECK(resumedResult.Rounds == earlyResult.Rounds);
+  PCH_CHECK(resumedResult.Iterations == earlyResult.Iterations);
+  PCH_CHECK(resumedResult.InvertedAfter == earlyResult.InvertedAfter);
+  PCH_CHECK(resumedResult.MinAfter == earlyResult.MinAfter);
+  PCH_CHECK(resumedResult.InvertedBefore == earlyResult.InvertedBefore);
+
+  // A run that never stalls never forks.
+  Lattice tangled = MakeLattice(4);
+  tangled.Mesh.Vertices.row(tangled.Id(2, 2, 2)) += Eigen::RowVector3d(0.3, 0.05, 0.0);
+  HexSurfaceProjection tangledProjection(
+    tangled.Surface, tangled.VertexCharts, tangled.Mesh, params.SoftFeatureAngle);
+  forks = 0;
+  PCH_CHECK(untangleHexMesh(tangled.Mesh,
+    tangledProjection,
+    HexUntanglingParameters(),
+    mainResult,
+    {},
+    [&forks](UntanglingFork&&) { ++forks; }));
+  PCH_CHECK(mainResult.InvertedBefore > 0 && mainResult.InvertedAfter == 0);
+  PCH_CHECK(forks == 0);
+  UntanglingFork empty;
+  PCH_CHECK(!resumeUntangling(empty, resumed, resumedResult));
+}
+
 void TestRefusals()
 {
   Lattice lattice = MakeLattice(2);
@@ -179,6 +254,7 @@ int main(int, char*[])
   TestPerfectLatticeStays();
   TestThreadsGiveSameBits();
   TestStallEndsRounds();
+  TestForkIsTheStalledRun();
   TestRefusals();
   return PCH_TEST_RESULT();
 }
