@@ -586,8 +586,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       outcome.Released = pathProjection.ReleasedCount();
       outcome.Quality = SummarizeHexQuality(ComputeHexScaledJacobians(outcome.Mesh));
     };
-    // Progress as fractions of [from, from + width]: the first half untangles, the second
-    // smooths.
+    // `whole`'s progress over [from, from + width] as a progress over [0, 1].
     auto part = [](const Progress& whole, double from, double width) -> Progress
     { return [whole, from, width](double f) { return ReportProgress(whole, from + width * f); }; };
     auto runSecond = [&](UntanglingFork& fork, const Progress& pathProgress)
@@ -631,7 +630,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         ThreadCap = this->CapBefore;
       }
     } joinOnExit{ second, threadCapBefore };
-    std::function<void(UntanglingFork&&)> onStall;
+    std::function<void(UntanglingFork &&)> onStall;
     if (pathCount > 1)
     {
       onStall = [&](UntanglingFork&& fork)
@@ -671,8 +670,10 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     pathUntanglingSeconds[0] = Seconds(mainStart);
     if (statuses[0])
     {
-      smoothPath(
-        outcomes[0], projection, statuses[0], part(mainProgress, 0.65 + 0.5 * mainWidth, 0.5 * mainWidth));
+      smoothPath(outcomes[0],
+        projection,
+        statuses[0],
+        part(mainProgress, 0.65 + 0.5 * mainWidth, 0.5 * mainWidth));
     }
     if (!statuses[0])
     {

@@ -369,7 +369,6 @@ bool NoWorse(const HexQualitySummary& quality, const HexQualitySummary& referenc
     quality.Inverted < reference.Inverted;
 }
 
-
 /// What every path of one untangling shares and never changes.
 struct UntanglingSetup
 {
@@ -610,8 +609,7 @@ Status RunRounds(const std::shared_ptr<const UntanglingSetup>& shared,
     const double final = s.Summary.Final;
     const double decrease =
       s.Summary.Initial > 0.0 ? (s.Summary.Initial - final) / s.Summary.Initial : 0.0;
-    const bool settled =
-      round > 0 && s.PreviousFinal - final < params.Tolerance * std::fabs(final);
+    const bool settled = round > 0 && s.PreviousFinal - final < params.Tolerance * std::fabs(final);
     s.PreviousFinal = final;
     // Or once a valid mesh stops getting better: a minimum held by the structure (a padded
     // concave corner) does not move, and the mean creeps.
@@ -813,9 +811,8 @@ Status untangleHexMesh(HexMesh& mesh,
   state.Last = setup.Before;
   // The main rounds, then a few with the boundary held where the last projection put it, so
   // that the interior settles on the boundary as it finally is.
-  state.MainRounds = setup.Before.Inverted == 0
-    ? std::min(params.MaxRounds, params.MaxRoundsValid)
-    : params.MaxRounds;
+  state.MainRounds = setup.Before.Inverted == 0 ? std::min(params.MaxRounds, params.MaxRoundsValid)
+                                                : params.MaxRounds;
   state.TotalRounds = state.MainRounds + std::max(0, params.FinalRounds);
   const Status status = RunRounds(shared, projection, params, state, progress, onStall);
   if (!status)

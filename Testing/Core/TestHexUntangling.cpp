@@ -185,7 +185,8 @@ void TestForkIsTheStalledRun()
   PCH_CHECK(untangleHexMesh(early.Mesh, early.VertexCharts, early.Surface, stalled, earlyResult));
 
   Lattice main = pushed();
-  HexSurfaceProjection projection(main.Surface, main.VertexCharts, main.Mesh, params.SoftFeatureAngle);
+  HexSurfaceProjection projection(
+    main.Surface, main.VertexCharts, main.Mesh, params.SoftFeatureAngle);
   int forks = 0;
   UntanglingFork kept;
   HexUntanglingResult mainResult;

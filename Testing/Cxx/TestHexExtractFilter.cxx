@@ -188,9 +188,8 @@ int main(int, char*[])
     onePath->SetUntanglingPaths(1);
     onePath->Update();
     vtkUnstructuredGrid* single = onePath->GetOutput(0);
-    std::cout << "slab with one untangling path: SJ min "
-              << FieldValue(single, "ScaledJacobianMin") << " (two: "
-              << FieldValue(hexes, "ScaledJacobianMin") << ", path "
+    std::cout << "slab with one untangling path: SJ min " << FieldValue(single, "ScaledJacobianMin")
+              << " (two: " << FieldValue(hexes, "ScaledJacobianMin") << ", path "
               << FieldValue(hexes, "UntanglingPath") << ")\n";
     PCH_CHECK(FieldValue(single, "ValidHexMesh") == 1);
     PCH_CHECK(FieldValue(single, "UntanglingPath") == 1);
