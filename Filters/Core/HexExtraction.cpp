@@ -617,11 +617,12 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     bool forked = false;
     UntanglingFork pendingFork;
     std::thread second;
-    struct JoinOnExit
+    // Joins the second path and lifts the thread cap, at the end of the paths or on any exit.
+    struct SecondPathJoin
     {
       std::thread& Thread;
       unsigned CapBefore;
-      ~JoinOnExit()
+      void operator()()
       {
         if (this->Thread.joinable())
         {
@@ -629,7 +630,8 @@ Status extractHexMesh(const PolycubeTetMesh& input,
         }
         ThreadCap = this->CapBefore;
       }
-    } joinOnExit{ second, threadCapBefore };
+      ~SecondPathJoin() { (*this)(); }
+    } joinSecond{ second, threadCapBefore };
     std::function<void(UntanglingFork &&)> onStall;
     if (pathCount > 1)
     {
@@ -679,11 +681,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     {
       cancelled = true;
     }
-    if (second.joinable())
-    {
-      second.join();
-    }
-    ThreadCap = threadCapBefore;
+    joinSecond();
     if (statuses[0] && pendingFork.Impl)
     {
       runSecond(pendingFork, part(progress, 0.65 + mainWidth, mainWidth));

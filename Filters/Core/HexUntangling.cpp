@@ -682,6 +682,28 @@ void KeepBest(const UntanglingSetup& setup,
   result.ReleasedVertices = projection.ReleasedCount();
 }
 
+/// Runs the rounds from `state` and fills `mesh` and `result` with what is kept; on failure
+/// (an abort) `mesh` gets the input positions back.
+Status RunAndKeep(const std::shared_ptr<const UntanglingSetup>& shared,
+  HexSurfaceProjection& projection,
+  const HexUntanglingParameters& params,
+  RoundState& state,
+  const Progress& progress,
+  const std::function<void(UntanglingFork&&)>& onStall,
+  HexMesh& mesh,
+  HexUntanglingResult& result)
+{
+  const Status status = RunRounds(shared, projection, params, state, progress, onStall);
+  if (!status)
+  {
+    mesh.Vertices = shared->Start;
+    return status;
+  }
+  KeepBest(*shared, state, projection, mesh, result);
+  ReportProgress(progress, 1.0);
+  return Status::Success();
+}
+
 void StartResult(const HexQualitySummary& before, HexUntanglingResult& result)
 {
   result = HexUntanglingResult();
@@ -814,15 +836,7 @@ Status untangleHexMesh(HexMesh& mesh,
   state.MainRounds = setup.Before.Inverted == 0 ? std::min(params.MaxRounds, params.MaxRoundsValid)
                                                 : params.MaxRounds;
   state.TotalRounds = state.MainRounds + std::max(0, params.FinalRounds);
-  const Status status = RunRounds(shared, projection, params, state, progress, onStall);
-  if (!status)
-  {
-    mesh.Vertices = setup.Start;
-    return status;
-  }
-  KeepBest(setup, state, projection, mesh, result);
-  ReportProgress(progress, 1.0);
-  return Status::Success();
+  return RunAndKeep(shared, projection, params, state, progress, onStall, mesh, result);
 }
 
 Status resumeUntangling(UntanglingFork& fork,
@@ -837,16 +851,8 @@ Status resumeUntangling(UntanglingFork& fork,
   UntanglingFork::Data& data = *fork.Impl;
   StartResult(data.Setup->Before, result);
   mesh.Cells = data.Setup->Cells;
-  const Status status =
-    RunRounds(data.Setup, *data.Projection, data.Params, data.State, progress, {});
-  if (!status)
-  {
-    mesh.Vertices = data.Setup->Start;
-    return status;
-  }
-  KeepBest(*data.Setup, data.State, *data.Projection, mesh, result);
-  ReportProgress(progress, 1.0);
-  return Status::Success();
+  return RunAndKeep(
+    data.Setup, *data.Projection, data.Params, data.State, progress, {}, mesh, result);
 }
 
 } // namespace polycubehex
