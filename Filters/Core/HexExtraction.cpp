@@ -694,7 +694,9 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       }
     }
     const int bestPath =
-      forked && BetterHexQuality(outcomes[1].Quality, outcomes[0].Quality) ? 1 : 0;
+      forked && BetterHexQuality(outcomes[1].Quality, outcomes[0].Quality, params.PathMinimumMargin)
+      ? 1
+      : 0;
     PathOutcome& best = outcomes[bestPath];
     // Wall-clock seconds: after the fork the paths run side by side.
     const double stepSeconds = Seconds(start);

@@ -95,13 +95,23 @@ HexQualitySummary SummarizeHexQuality(const Eigen::VectorXd& quality)
   return summary;
 }
 
-bool BetterHexQuality(const HexQualitySummary& quality, const HexQualitySummary& other)
+bool BetterHexQuality(const HexQualitySummary& quality,
+  const HexQualitySummary& other,
+  double minimumMargin)
 {
   if (quality.Inverted != other.Inverted)
   {
     return quality.Inverted < other.Inverted;
   }
-  return quality.Min > other.Min || (quality.Min == other.Min && quality.Mean > other.Mean);
+  if (std::abs(quality.Min - other.Min) > minimumMargin)
+  {
+    return quality.Min > other.Min;
+  }
+  if (quality.Mean != other.Mean)
+  {
+    return quality.Mean > other.Mean;
+  }
+  return quality.Min > other.Min;
 }
 
 double MeanHexEdgeLength(const HexMesh& mesh)

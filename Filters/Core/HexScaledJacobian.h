@@ -71,9 +71,13 @@ struct HexQualitySummary
 /// Summary of #H scaled Jacobians (all zero when there are none).
 HexQualitySummary SummarizeHexQuality(const Eigen::VectorXd& quality);
 
-/// Whether `quality` is better than `other`: fewer inverted hexes, then a larger minimum, then a
-/// larger mean.
-bool BetterHexQuality(const HexQualitySummary& quality, const HexQualitySummary& other);
+/// Whether `quality` is better than `other`: fewer inverted hexes, then a minimum larger by more
+/// than `minimumMargin`, then (minima within the margin of each other) a larger mean, then a
+/// larger minimum. The margin keeps a gain of a thousandth in the worst hex from costing a
+/// hundredth of the mean (torus l1: 0.768 / 0.949 against 0.767 / 0.957).
+bool BetterHexQuality(const HexQualitySummary& quality,
+  const HexQualitySummary& other,
+  double minimumMargin = 0.0);
 
 /// The mean over hexes of the diagonal 0-6 over sqrt(3): about one hex edge (0 without hexes).
 double MeanHexEdgeLength(const HexMesh& mesh);

@@ -693,10 +693,39 @@ void TestTiming()
   PCH_CHECK(std::abs(r.HexCount - 20000) < 2000);
   PCH_CHECK(r.ScaledJacobianMin > 0.0);
 }
+
+/// The order the two untangling paths are chosen by: inverted count first, then the minimum
+/// unless it differs by no more than the margin, then the mean.
+void TestPathChoiceOrder()
+{
+  const auto summary = [](double min, double mean, int inverted)
+  {
+    HexQualitySummary s;
+    s.Min = min;
+    s.Mean = mean;
+    s.Inverted = inverted;
+    return s;
+  };
+  const double margin = HexExtractionParameters().PathMinimumMargin;
+  PCH_CHECK(margin > 0.0);
+  // Fewer inverted hexes win whatever the rest.
+  PCH_CHECK(BetterHexQuality(summary(-0.5, 0.5, 1), summary(0.1, 0.9, 2), margin));
+  // A gain in the minimum beyond the margin wins over the mean.
+  PCH_CHECK(BetterHexQuality(summary(0.5, 0.90, 0), summary(0.48, 0.95, 0), margin));
+  // Within the margin, the mean decides (torus l1: 0.767 / 0.957 over 0.768 / 0.949) ...
+  PCH_CHECK(BetterHexQuality(summary(0.767, 0.957, 0), summary(0.768, 0.949, 0), margin));
+  PCH_CHECK(!BetterHexQuality(summary(0.768, 0.949, 0), summary(0.767, 0.957, 0), margin));
+  // ... whereas without a margin the larger minimum always wins.
+  PCH_CHECK(BetterHexQuality(summary(0.768, 0.949, 0), summary(0.767, 0.957, 0)));
+  // Equal means: the larger minimum; equal everything: not better.
+  PCH_CHECK(BetterHexQuality(summary(0.768, 0.95, 0), summary(0.767, 0.95, 0), margin));
+  PCH_CHECK(!BetterHexQuality(summary(0.7, 0.95, 0), summary(0.7, 0.95, 0), margin));
+}
 } // namespace
 
 int main(int, char*[])
 {
+  TestPathChoiceOrder();
   TestCube();
   TestLShape();
   TestBentOriginal();
