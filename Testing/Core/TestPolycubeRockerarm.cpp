@@ -43,6 +43,21 @@ void CheckDefectFlags(const PolycubeResult& r, const char* what)
   PCH_CHECK((squashed >= 2) == (r.SquashedCreaseCount > 0));
   PCH_CHECK(turnedBack == 0 || r.TurnedBackCreaseCount > 0);
   PCH_CHECK(squashed == 0 || r.SquashedCreaseCount > 0);
+  // Each kind of defect is also said in a warning, exactly when there is one.
+  const auto warns = [&](const char* words)
+  {
+    for (const auto& warning : r.Warnings)
+    {
+      if (warning.find(words) != std::string::npos)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  PCH_CHECK(warns("vertices stay off their chart planes") == (r.UnflattenedVertexCount > 0));
+  PCH_CHECK(warns("run back along their axis") == (r.TurnedBackCreaseCount > 0));
+  PCH_CHECK(warns("less than a quarter of their input length") == (r.SquashedCreaseCount > 0));
 }
 } // namespace
 
