@@ -164,8 +164,9 @@ public:
   /// With Smoothing and Untangling: 2 (the default) also follows a second path, forked from
   /// the untangling where the count of inverted hexes stops falling for two rounds and ending
   /// its untangling there, smooths both (side by side on two threads) and keeps the better
-  /// mesh (fewer inverted hexes, then the larger minimum, then the larger mean): never worse
-  /// than 1, which untangles and smooths once, for 10-25 % more time on the benchmark's
+  /// mesh (fewer inverted hexes, then the larger minimum where the two differ by more than
+  /// 0.01, else the larger mean): its minimum never more than 0.01 below that of 1, which
+  /// untangles and smooths once, for 10-25 % more time on the benchmark's
   /// models. The field UntanglingPath says which was kept. In [1, 2].
   vtkSetClampMacro(UntanglingPaths, int, 1, 2);
   vtkGetMacro(UntanglingPaths, int);

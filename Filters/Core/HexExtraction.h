@@ -91,9 +91,9 @@ struct HexExtractionParameters
   /// inverted hexes first has set no new low for two main rounds
   /// (HexUntanglingParameters::ForkStallRounds): the second path ends its main rounds there,
   /// both are smoothed, side by side on two threads, and the better mesh is kept (fewer
-  /// inverted hexes, then the larger minimum by more than PathMinimumMargin, then the larger
-  /// mean), so it is never worse than 1, which untangles and smooths once, by more than the
-  /// margin in the minimum. An untangling that never stalls never forks.
+  /// inverted hexes, then the larger minimum where they differ by more than PathMinimumMargin,
+  /// else the larger mean), so its minimum is never more than the margin below that of 1, which
+  /// untangles and smooths once. An untangling that never stalls never forks.
   int UntanglingPaths = 2;
   /// With two paths: minima closer than this (default 0.01) count as a tie, broken by the mean
   /// (BetterHexQuality). Measured with 0 (the larger minimum always wins): torus l1 at 10k hexes
