@@ -114,7 +114,7 @@ public:
   ///@{
   /// Weight of the normal difference term, eq. (12). Default 1, at least 0. Other values give
   /// other labellings; where the filter warns of squashed polycube edges, 1.5 or 2 may avoid them
-  /// (rockerarm, Uniform: both do), though on other models they do worse.
+  /// (rockerarm, Uniform: 2 does), though on other models they do worse.
   vtkSetClampMacro(NormalDifferenceWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(NormalDifferenceWeight, double);
   ///@}

@@ -1735,8 +1735,8 @@ Status ComputePolycube(const TetMesh& input,
     &out.MinCreaseStretch);
   // Say where the hexes will suffer, and what to try: both defects come from the labelling, and
   // the normal difference weight changes the labelling (on rockerarm, Uniform guidance, its
-  // squashed edge is gone at 1.5 and 2, the smoothed hexes' minimum going from 0.21 to 0.48 and
-  // 0.53; but other models do worse there, so it is no better default).
+  // squashed edge is gone at 2, the smoothed hexes' minimum going from 0.21 to 0.53, and 0.48 at
+  // 1.5; but other models do worse there, so it is no better default).
   if (out.SquashedCreaseCount > 0)
   {
     std::ostringstream message;
