@@ -54,6 +54,7 @@ vtkPolycubeDeformFilter::vtkPolycubeDeformFilter()
   this->NormalDifferenceAcrossCuts = defaults.NormalDifferenceAcrossCuts;
   this->MonotoneRepairRounds = defaults.MonotoneRepairRounds;
   this->MinChartAreaFraction = defaults.MinChartAreaFraction;
+  this->SquashedRetryStretch = defaults.SquashedRetryStretch;
   this->Flatten = defaults.Flatten;
   this->FlattenHomotopySteps = defaults.FlattenHomotopySteps;
 }
@@ -187,6 +188,7 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
   params.NormalDifferenceAcrossCuts = this->NormalDifferenceAcrossCuts;
   params.MonotoneRepairRounds = this->MonotoneRepairRounds;
   params.MinChartAreaFraction = this->MinChartAreaFraction;
+  params.SquashedRetryStretch = this->SquashedRetryStretch;
   params.Flatten = this->Flatten;
   params.FlattenHomotopySteps = this->FlattenHomotopySteps;
   auto progress = [this](double fraction)
@@ -286,6 +288,7 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     fields, "SquashedCreaseCount", result.SquashedCreaseCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "MinCreaseStretch", result.MinCreaseStretch);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "PolycubeSeconds", result.TotalSeconds);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "PolycubeRetried", result.Retried ? 1 : 0);
   vtkNew<vtkDoubleArray> translations; // t_c of x_plus = Pi_c x_minus + t_c; none when uncut
   translations->SetName(names::CutTranslations);
   translations->SetNumberOfComponents(3);
@@ -344,6 +347,7 @@ void vtkPolycubeDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalDifferenceAcrossCuts: " << this->NormalDifferenceAcrossCuts << "\n";
   os << indent << "MonotoneRepairRounds: " << this->MonotoneRepairRounds << "\n";
   os << indent << "MinChartAreaFraction: " << this->MinChartAreaFraction << "\n";
+  os << indent << "SquashedRetryStretch: " << this->SquashedRetryStretch << "\n";
   os << indent << "Flatten: " << this->Flatten << "\n";
   os << indent << "FlattenHomotopySteps: " << this->FlattenHomotopySteps << "\n";
 }

@@ -144,6 +144,18 @@ public:
   ///@}
 
   ///@{
+  /// When the polycube has an edge squashed below this fraction of its input length along its
+  /// axis (field MinCreaseStretch), the deformation runs once more with the other setting of
+  /// when the inversion barrier widens, and the polycube with the less squashed edge is kept
+  /// (field PolycubeRetried; PolycubeSeconds counts both runs). The continuation's outcome is
+  /// chaotic in that setting: on rockerarm's closed form one squashes an edge to 0.016, the
+  /// other to 0.038, with smoothed hexes of 0.35 and 0.59. Default 0.05, 0 turns it off, in
+  /// [0, 1].
+  vtkSetClampMacro(SquashedRetryStretch, double, 0.0, 1.0);
+  vtkGetMacro(SquashedRetryStretch, double);
+  ///@}
+
+  ///@{
   /// Flatten every chart exactly onto its plane (off: stop after labelling). Default on.
   vtkSetMacro(Flatten, bool);
   vtkGetMacro(Flatten, bool);
@@ -180,6 +192,7 @@ protected:
   bool NormalDifferenceAcrossCuts = false;
   int MonotoneRepairRounds = 6;
   double MinChartAreaFraction = 2e-4;
+  double SquashedRetryStretch = 0.05;
   bool Flatten = true;
   int FlattenHomotopySteps = 0;
 

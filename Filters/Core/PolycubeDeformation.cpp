@@ -704,7 +704,11 @@ Status CheckInput(const TetMesh& input)
 
 } // namespace
 
-Status ComputePolycube(const TetMesh& input,
+namespace
+{
+/// One deformation with the settings as given (ComputePolycube picks the starvation setting and
+/// may call this twice).
+Status ComputePolycubeOnce(const TetMesh& input,
   const PolycubeParameters& params,
   PolycubeResult& out,
   const Progress& progress,
@@ -1801,6 +1805,64 @@ Status ComputePolycube(const TetMesh& input,
     out.Warnings.push_back(message.str());
   }
   out.TotalSeconds = SecondsSince(totalStart);
+  ReportProgress(progress, 1.0);
+  return Status::Success();
+}
+
+} // namespace
+
+Status ComputePolycube(const TetMesh& input,
+  const PolycubeParameters& params,
+  PolycubeResult& out,
+  const Progress& progress,
+  const std::vector<Eigen::Matrix3d>& tetFrames,
+  const PolycubeCuts* cuts)
+{
+  const auto start = Clock::now();
+  const bool frameGuided = !tetFrames.empty();
+  PolycubeParameters first = params;
+  first.StarvedHalvingsPerIteration = frameGuided ? params.FrameGuidedStarvedHalvingsPerIteration
+                                                  : params.StarvedHalvingsPerIteration;
+  // The first run reports up to 3/4, a retry the rest.
+  const Progress firstProgress = [&progress](double f) { return ReportProgress(progress, 0.75 * f); };
+  Status status = ComputePolycubeOnce(input, first, out, firstProgress, tetFrames, cuts);
+  out.StarvedHalvingsPerIteration = first.StarvedHalvingsPerIteration;
+  if (!status || !(out.MinCreaseStretch < params.SquashedRetryStretch))
+  {
+    out.TotalSeconds = SecondsSince(start);
+    ReportProgress(progress, 1.0);
+    return status;
+  }
+  PolycubeParameters second = params;
+  second.StarvedHalvingsPerIteration = frameGuided ? params.StarvedHalvingsPerIteration
+                                                   : params.FrameGuidedStarvedHalvingsPerIteration;
+  const Progress secondProgress = [&progress](double f)
+  { return ReportProgress(progress, 0.75 + 0.25 * f); };
+  PolycubeResult retry;
+  status = ComputePolycubeOnce(input, second, retry, secondProgress, tetFrames, cuts);
+  if (!status)
+  {
+    // Keep the first result unless the user aborted.
+    if (status.Message().find("aborted") != std::string::npos)
+    {
+      return status;
+    }
+    out.Warnings.push_back("a second deformation against the squashed polycube edge failed: " +
+      status.Message());
+  }
+  else
+  {
+    retry.StarvedHalvingsPerIteration = second.StarvedHalvingsPerIteration;
+    const bool retryBetter = retry.MinCreaseStretch > out.MinCreaseStretch ||
+      (retry.MinCreaseStretch == out.MinCreaseStretch &&
+        retry.UnflattenedVertexCount < out.UnflattenedVertexCount);
+    if (retryBetter)
+    {
+      out = std::move(retry);
+    }
+  }
+  out.Retried = true;
+  out.TotalSeconds = SecondsSince(start);
   ReportProgress(progress, 1.0);
   return Status::Success();
 }

@@ -98,6 +98,24 @@ struct PolycubeParameters
   /// many times per iteration on average to keep every tet positive. Measured: rockerarm at most
   /// 3.8 per iteration in any round, fertility and elephant 7-9 from their fourth round on.
   double StarvedHalvingsPerIteration = 5.0;
+  /// The same for FrameField guidance, where the continuation starts from the frame fit. Lower,
+  /// by measurement (medians of the benchmark's hex stage, smoothed): at 5, fertility's closed
+  /// form let tets collapse in rounds 4-5 (smallest volume ratio 0.0099, then 0.00017) before its
+  /// sixth round was starved; the faces over them hid as thin tongues that turn creases back by
+  /// 15 % of the diagonal (11 creases, 4 squashed, 186 vertices off their planes; hexes 0.177 /
+  /// Hausdorff 19.1e-3). At 2 the zone widens from round 4: 2 creases turn back by 0.7 %, 1 is
+  /// squashed, 104 vertices off their planes, hexes 0.620 / 7.05e-3, and 52 s instead of 88 s.
+  /// Kitten's closed form: 36 corners either way, 0.727 -> 0.693. Rockerarm's squashes an edge
+  /// to 0.016 at 2, which SquashedRetryStretch catches.
+  double FrameGuidedStarvedHalvingsPerIteration = 2.0;
+  /// When the result has a polycube edge squashed below this stretch (PolycubeResult's
+  /// MinCreaseStretch), the whole deformation runs once more with the other guidance's
+  /// starvation setting (StarvedHalvingsPerIteration <-> FrameGuidedStarvedHalvingsPerIteration)
+  /// and the result whose smallest stretch is larger is kept (then the one with fewer vertices
+  /// off their planes). The outcome of the continuation is chaotic in that setting: on rockerarm's
+  /// closed form, 2 squashes an edge to 0.016 and 5 to 0.038, with smoothed hexes of 0.35 and
+  /// 0.59. 0 turns the retry off.
+  double SquashedRetryStretch = 0.05;
 
   /// Chart clean-up: charts below this fraction of the boundary area, or with fewer faces than
   /// MinChartFaceCount, are merged into a neighbour when they are thin along its axis (see
@@ -262,6 +280,11 @@ struct PolycubeResult
   Points CutTranslations;
   int CopyCount = 0;
   int Rounds = 0; ///< continuation rounds (0: the input was already a polycube)
+  /// The starvation setting of the kept result (PolycubeParameters::StarvedHalvingsPerIteration
+  /// or FrameGuidedStarvedHalvingsPerIteration), and whether the deformation ran twice
+  /// (SquashedRetryStretch); the kept result's seconds include both runs.
+  double StarvedHalvingsPerIteration = 0.0;
+  bool Retried = false;
   std::vector<PolycubeRound> RoundLog; ///< one entry per continuation round
   int Iterations = 0;                  ///< Newton iterations, all phases
   int PresplitEdgeCount = 0;

@@ -14,9 +14,11 @@
 #include "TestMeshGenerators.h"
 #include "Tetrahedralize.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 using namespace polycubehex;
 
@@ -100,5 +102,58 @@ int main(int, char*[])
   {
     PCH_CHECK(round.BarrierThreshold == PolycubeParameters().BarrierThreshold);
   }
+  PCH_CHECK(!automatic.Result.Retried);
+  PCH_CHECK(automatic.Result.StarvedHalvingsPerIteration ==
+    PolycubeParameters().StarvedHalvingsPerIteration);
+
+  // The retry (SquashedRetryStretch): forced here by a bound every stretch is below, it runs
+  // the other starvation setting and keeps the result with the larger smallest stretch (then
+  // fewer vertices off their planes), as the two settings give when run alone.
+  PolycubeParameters alone;
+  alone.Flatten = false;
+  alone.SquashedRetryStretch = 0.0;
+  alone.StarvedHalvingsPerIteration = 1e9; // never widens
+  PolycubeResult narrow;
+  PCH_CHECK(ComputePolycube(mesh, alone, narrow).Ok());
+  alone.StarvedHalvingsPerIteration = 0.0; // widens after the first round
+  PolycubeResult wide;
+  PCH_CHECK(ComputePolycube(mesh, alone, wide).Ok());
+  PCH_CHECK(!narrow.Retried && !wide.Retried);
+  PolycubeParameters retried = alone;
+  retried.StarvedHalvingsPerIteration = 1e9;
+  retried.FrameGuidedStarvedHalvingsPerIteration = 0.0; // the other setting of the retry
+  retried.SquashedRetryStretch = 2.0;                   // every stretch is at most 1
+  std::vector<double> reported;
+  PolycubeResult kept;
+  PCH_CHECK(ComputePolycube(mesh,
+    retried,
+    kept,
+    [&reported](double f)
+    {
+      reported.push_back(f);
+      return true;
+    })
+              .Ok());
+  PCH_CHECK(kept.Retried);
+  const bool wideBetter = wide.MinCreaseStretch > narrow.MinCreaseStretch ||
+    (wide.MinCreaseStretch == narrow.MinCreaseStretch &&
+      wide.UnflattenedVertexCount < narrow.UnflattenedVertexCount);
+  const PolycubeResult& expected = wideBetter ? wide : narrow;
+  std::cout << "retry: stretch " << narrow.MinCreaseStretch << " (never widened) and "
+            << wide.MinCreaseStretch << " (widened), kept " << kept.MinCreaseStretch
+            << " with starvation setting " << kept.StarvedHalvingsPerIteration << std::endl;
+  PCH_CHECK(kept.StarvedHalvingsPerIteration == (wideBetter ? 0.0 : 1e9));
+  PCH_CHECK(kept.MinCreaseStretch == expected.MinCreaseStretch);
+  PCH_CHECK(kept.Rounds == expected.Rounds);
+  PCH_CHECK(kept.Positions.rows() == expected.Positions.rows() &&
+    (kept.Positions - expected.Positions).cwiseAbs().maxCoeff() == 0.0);
+  // Progress never goes back, and ends at 1.
+  PCH_CHECK(!reported.empty() && reported.back() == 1.0);
+  PCH_CHECK(std::is_sorted(reported.begin(), reported.end()));
+  // An abort during the retry is an abort, not a fallback to the first result.
+  PolycubeResult aborted;
+  const Status stopped =
+    ComputePolycube(mesh, retried, aborted, [](double f) { return f < 0.8; });
+  PCH_CHECK(!stopped.Ok() && stopped.Message().find("aborted") != std::string::npos);
   return PCH_TEST_RESULT();
 }
