@@ -1824,10 +1824,15 @@ Status ComputePolycube(const TetMesh& input,
   first.StarvedHalvingsPerIteration = frameGuided ? params.FrameGuidedStarvedHalvingsPerIteration
                                                   : params.StarvedHalvingsPerIteration;
   // The first run reports up to 3/4, a retry the rest.
-  const Progress firstProgress = [&progress](double f) { return ReportProgress(progress, 0.75 * f); };
+  const Progress firstProgress = [&progress](double f)
+  { return ReportProgress(progress, 0.75 * f); };
   Status status = ComputePolycubeOnce(input, first, out, firstProgress, tetFrames, cuts);
+  if (!status)
+  {
+    return status;
+  }
   out.StarvedHalvingsPerIteration = first.StarvedHalvingsPerIteration;
-  if (!status || !(out.MinCreaseStretch < params.SquashedRetryStretch))
+  if (!(out.MinCreaseStretch < params.SquashedRetryStretch))
   {
     out.TotalSeconds = SecondsSince(start);
     ReportProgress(progress, 1.0);
@@ -1836,19 +1841,23 @@ Status ComputePolycube(const TetMesh& input,
   PolycubeParameters second = params;
   second.StarvedHalvingsPerIteration = frameGuided ? params.StarvedHalvingsPerIteration
                                                    : params.FrameGuidedStarvedHalvingsPerIteration;
-  const Progress secondProgress = [&progress](double f)
-  { return ReportProgress(progress, 0.75 + 0.25 * f); };
+  bool aborted = false;
+  const Progress secondProgress = [&progress, &aborted](double f)
+  {
+    aborted = aborted || !ReportProgress(progress, 0.75 + 0.25 * f);
+    return !aborted;
+  };
   PolycubeResult retry;
   status = ComputePolycubeOnce(input, second, retry, secondProgress, tetFrames, cuts);
+  if (aborted)
+  {
+    return status;
+  }
   if (!status)
   {
-    // Keep the first result unless the user aborted.
-    if (status.Message().find("aborted") != std::string::npos)
-    {
-      return status;
-    }
-    out.Warnings.push_back("a second deformation against the squashed polycube edge failed: " +
-      status.Message());
+    // The first result stands.
+    out.Warnings.push_back(
+      "a second deformation against the squashed polycube edge failed: " + status.Message());
   }
   else
   {

@@ -132,8 +132,7 @@ int main(int, char*[])
     {
       reported.push_back(f);
       return true;
-    })
-              .Ok());
+    }).Ok());
   PCH_CHECK(kept.Retried);
   const bool wideBetter = wide.MinCreaseStretch > narrow.MinCreaseStretch ||
     (wide.MinCreaseStretch == narrow.MinCreaseStretch &&
@@ -152,8 +151,7 @@ int main(int, char*[])
   PCH_CHECK(std::is_sorted(reported.begin(), reported.end()));
   // An abort during the retry is an abort, not a fallback to the first result.
   PolycubeResult aborted;
-  const Status stopped =
-    ComputePolycube(mesh, retried, aborted, [](double f) { return f < 0.8; });
+  const Status stopped = ComputePolycube(mesh, retried, aborted, [](double f) { return f < 0.8; });
   PCH_CHECK(!stopped.Ok() && stopped.Message().find("aborted") != std::string::npos);
   return PCH_TEST_RESULT();
 }
