@@ -99,12 +99,12 @@ struct PolycubeParameters
   /// 3.8 per iteration in any round, fertility and elephant 7-9 from their fourth round on.
   double StarvedHalvingsPerIteration = 5.0;
   /// The same for FrameField guidance, where the continuation starts from the frame fit. Lower,
-  /// by measurement (medians of the benchmark's hex stage, smoothed): at 5, fertility's closed
+  /// by measurement (BENCHMARKS.md, smoothed hexes at the paper's counts): at 5, fertility's closed
   /// form let tets collapse in rounds 4-5 (smallest volume ratio 0.0099, then 0.00017) before its
   /// sixth round was starved; the faces over them hid as thin tongues that turn creases back by
   /// 15 % of the diagonal (11 creases, 4 squashed, 186 vertices off their planes; hexes 0.177 /
   /// Hausdorff 19.1e-3). At 2 the zone widens from round 4: 2 creases turn back by 0.7 %, 1 is
-  /// squashed, 104 vertices off their planes, hexes 0.620 / 7.05e-3, and 52 s instead of 88 s.
+  /// squashed, 104 vertices off their planes, hexes 0.620 / 7.05e-3, and 52 s instead of 84 s.
   /// Kitten's closed form: 36 corners either way, 0.727 -> 0.693. Rockerarm's squashes an edge
   /// to 0.016 at 2, which SquashedRetryStretch catches.
   double FrameGuidedStarvedHalvingsPerIteration = 2.0;
