@@ -717,6 +717,7 @@ Status ComputePolycubeOnce(const TetMesh& input,
 {
   const auto totalStart = Clock::now();
   out = PolycubeResult();
+  out.StarvedHalvingsPerIteration = params.StarvedHalvingsPerIteration;
   Status status = CheckInput(input);
   if (!status)
   {
@@ -1819,10 +1820,14 @@ Status ComputePolycube(const TetMesh& input,
   const PolycubeCuts* cuts)
 {
   const auto start = Clock::now();
+  // This guidance's setting of when the barrier widens, and the other one for a retry.
   const bool frameGuided = !tetFrames.empty();
   PolycubeParameters first = params;
+  PolycubeParameters second = params;
   first.StarvedHalvingsPerIteration = frameGuided ? params.FrameGuidedStarvedHalvingsPerIteration
                                                   : params.StarvedHalvingsPerIteration;
+  second.StarvedHalvingsPerIteration = frameGuided ? params.StarvedHalvingsPerIteration
+                                                   : params.FrameGuidedStarvedHalvingsPerIteration;
   // The first run reports up to 3/4, a retry the rest.
   const Progress firstProgress = [&progress](double f)
   { return ReportProgress(progress, 0.75 * f); };
@@ -1831,46 +1836,34 @@ Status ComputePolycube(const TetMesh& input,
   {
     return status;
   }
-  out.StarvedHalvingsPerIteration = first.StarvedHalvingsPerIteration;
-  if (!(out.MinCreaseStretch < params.SquashedRetryStretch))
+  if (out.MinCreaseStretch < params.SquashedRetryStretch)
   {
-    out.TotalSeconds = SecondsSince(start);
-    ReportProgress(progress, 1.0);
-    return status;
-  }
-  PolycubeParameters second = params;
-  second.StarvedHalvingsPerIteration = frameGuided ? params.StarvedHalvingsPerIteration
-                                                   : params.FrameGuidedStarvedHalvingsPerIteration;
-  bool aborted = false;
-  const Progress secondProgress = [&progress, &aborted](double f)
-  {
-    aborted = aborted || !ReportProgress(progress, 0.75 + 0.25 * f);
-    return !aborted;
-  };
-  PolycubeResult retry;
-  status = ComputePolycubeOnce(input, second, retry, secondProgress, tetFrames, cuts);
-  if (aborted)
-  {
-    return status;
-  }
-  if (!status)
-  {
-    // The first result stands.
-    out.Warnings.push_back(
-      "a second deformation against the squashed polycube edge failed: " + status.Message());
-  }
-  else
-  {
-    retry.StarvedHalvingsPerIteration = second.StarvedHalvingsPerIteration;
-    const bool retryBetter = retry.MinCreaseStretch > out.MinCreaseStretch ||
+    bool aborted = false;
+    const Progress secondProgress = [&progress, &aborted](double f)
+    {
+      aborted = aborted || !ReportProgress(progress, 0.75 + 0.25 * f);
+      return !aborted;
+    };
+    PolycubeResult retry;
+    status = ComputePolycubeOnce(input, second, retry, secondProgress, tetFrames, cuts);
+    if (aborted)
+    {
+      return status;
+    }
+    if (!status)
+    {
+      // The first result stands.
+      out.Warnings.push_back(
+        "a second deformation against the squashed polycube edge failed: " + status.Message());
+    }
+    else if (retry.MinCreaseStretch > out.MinCreaseStretch ||
       (retry.MinCreaseStretch == out.MinCreaseStretch &&
-        retry.UnflattenedVertexCount < out.UnflattenedVertexCount);
-    if (retryBetter)
+        retry.UnflattenedVertexCount < out.UnflattenedVertexCount))
     {
       out = std::move(retry);
     }
+    out.Retried = true;
   }
-  out.Retried = true;
   out.TotalSeconds = SecondsSince(start);
   ReportProgress(progress, 1.0);
   return Status::Success();
