@@ -218,6 +218,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   params.PolishSharpEdgeAngle = this->PolishSharpEdgeAngle;
   params.MeanSearchSweeps = this->MeanSearchSweeps;
   params.UntanglingPaths = this->UntanglingPaths;
+  params.ScaleRetries = this->ScaleRetries;
+  params.ScaleRetryBelow = this->ScaleRetryBelow;
   auto progress = [this](double fraction)
   {
     this->UpdateProgress(0.8 * fraction);
@@ -320,10 +322,11 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(fields, "SmoothingSweeps", result.SmoothingSweeps);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "UntanglingSeconds", result.UntanglingSeconds);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, "SmoothingSeconds", result.SmoothingSeconds);
-  polycubehex::SetFieldValue<vtkDoubleArray>(fields,
-    "ExtractionSeconds",
-    result.RoundingSeconds + result.ExtractionSeconds + result.PaddingSeconds +
-      result.UntanglingSeconds + result.SmoothingSeconds);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "ScaleFactor", result.LatticeScale / result.TargetLatticeScale);
+  polycubehex::SetFieldValue<vtkIntArray>(fields, "ScaleRetryCount", result.ScaleRetryCount);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "DiscardedSeconds", result.DiscardedSeconds);
+  polycubehex::SetFieldValue<vtkDoubleArray>(fields, "ExtractionSeconds", result.TotalSeconds());
 
   quadOutput->SetPoints(hexOutput->GetPoints());
   vtkNew<vtkCellArray> quads;
@@ -364,6 +367,8 @@ void vtkHexExtractFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PolishSharpEdgeAngle: " << this->PolishSharpEdgeAngle << "\n";
   os << indent << "MeanSearchSweeps: " << this->MeanSearchSweeps << "\n";
   os << indent << "UntanglingPaths: " << this->UntanglingPaths << "\n";
+  os << indent << "ScaleRetries: " << this->ScaleRetries << "\n";
+  os << indent << "ScaleRetryBelow: " << this->ScaleRetryBelow << "\n";
   os << indent << "ComputeDistances: " << this->ComputeDistances << "\n";
   os << indent << "NumberOfDistanceSamples: " << this->NumberOfDistanceSamples << "\n";
 }

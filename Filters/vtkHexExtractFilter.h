@@ -173,6 +173,26 @@ public:
   ///@}
 
   ///@{
+  /// With Smoothing: when the mesh's minimum scaled Jacobian is below ScaleRetryBelow, extract
+  /// again at a lattice scale 1 % larger, then (2) 1 % smaller, until one reaches it, and keep
+  /// the best mesh (fewer inverted hexes, then the larger minimum, within 0.01 the larger
+  /// mean). Where the lattice falls on the polycube's folds decides whether the untangling can
+  /// lift every hex (rockerarm l1: minimum 0.208 and Hausdorff 19.6 at 24,272 hexes, 0.461 and
+  /// 10.2 at 24,676). Each retry costs one more extraction. Fields ScaleFactor (the kept
+  /// lattice scale over the one the targets ask for) and ScaleRetryCount. Default 2, in
+  /// [0, 2]; 0 turns the retries off.
+  vtkSetClampMacro(ScaleRetries, int, 0, 2);
+  vtkGetMacro(ScaleRetries, int);
+  ///@}
+
+  ///@{
+  /// The minimum scaled Jacobian below which ScaleRetries extracts again. Default 0.3, in
+  /// [0, 1].
+  vtkSetClampMacro(ScaleRetryBelow, double, 0.0, 1.0);
+  vtkGetMacro(ScaleRetryBelow, double);
+  ///@}
+
+  ///@{
   /// Integers tried per chart plane by the greedy rounding. Default 4, in [1, 64].
   vtkSetClampMacro(RoundingCandidates, int, 1, 64);
   vtkGetMacro(RoundingCandidates, int);
@@ -216,6 +236,8 @@ protected:
   double PolishSharpEdgeAngle = 60.0;
   int MeanSearchSweeps = 3;
   int UntanglingPaths = 2;
+  int ScaleRetries = 2;
+  double ScaleRetryBelow = 0.3;
   bool ComputeDistances = true;
   int NumberOfDistanceSamples = 100000;
 

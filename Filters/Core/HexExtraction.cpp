@@ -152,10 +152,11 @@ void RemoveLatticeHexRows(LatticeHexMesh& lattice, const std::vector<int>& remov
     lattice.HexCornerRotations = std::move(rotations);
   }
 }
-} // namespace
-
-Status extractHexMesh(const PolycubeTetMesh& input,
+/// One extraction at `scaleFactor` times the scale the targets ask for (extractHexMesh retries
+/// at other factors).
+Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
   const HexExtractionParameters& params,
+  double scaleFactor,
   HexExtractionResult& result,
   const Progress& progress)
 {
@@ -278,7 +279,9 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     inputVolume * diagonal * diagonal * diagonal,
     params.TargetHexCount,
     params.TargetEdgeLength,
-    params.Padding);
+    params.Padding) *
+    scaleFactor;
+  result.TargetLatticeScale = result.LatticeScale / scaleFactor;
   if (!(result.LatticeScale > 0.0))
   {
     return Status::Failure("cannot choose a resolution from these targets");
@@ -760,6 +763,80 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   result.MeasuresSeconds = Seconds(start);
   mesh.Vertices = (mesh.Vertices * diagonal).rowwise() + centre;
   result.Mesh = std::move(mesh);
+  ReportProgress(progress, 1.0);
+  return Status::Success();
+}
+
+/// Whether `retry` is a better mesh than `kept`: fewer inverted hexes, then BetterHexQuality.
+bool BetterExtraction(
+  const HexExtractionResult& retry, const HexExtractionResult& kept, double minimumMargin)
+{
+  return BetterHexQuality({ retry.ScaledJacobianMin, retry.ScaledJacobianMean, retry.InvertedHexCount },
+    { kept.ScaledJacobianMin, kept.ScaledJacobianMean, kept.InvertedHexCount },
+    minimumMargin);
+}
+} // namespace
+
+Status extractHexMesh(const PolycubeTetMesh& input,
+  const HexExtractionParameters& params,
+  HexExtractionResult& result,
+  const Progress& progress)
+{
+  // Where the lattice falls on the polycube's folds decides what the untangling and the
+  // smoothing can reach, so a poor smoothed mesh is extracted again at a lattice scale 1 %
+  // larger, then 1 % smaller, and the best is kept (ScaleRetries).
+  const bool mayRetry = params.Smoothing && params.ScaleRetries > 0;
+  const double firstShare = mayRetry ? 0.6 : 1.0;
+  const Progress firstProgress = [&progress, firstShare](double f)
+  { return ReportProgress(progress, firstShare * f); };
+  Status status = ExtractHexMeshOnce(input, params, 1.0, result, firstProgress);
+  if (!status || !mayRetry)
+  {
+    return status;
+  }
+  // Relative to the scale the first extraction ended at (its rounding may have moved it).
+  const double firstFactor = result.LatticeScale / result.TargetLatticeScale;
+  const double steps[] = { 1.01, 0.99 };
+  const int retries = std::min(params.ScaleRetries, 2);
+  double discardedSeconds = 0.0;
+  int tried = 0;
+  for (int k = 0; k < retries && result.ScaledJacobianMin < params.ScaleRetryBelow; ++k)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    bool aborted = false;
+    const double from = firstShare + (1.0 - firstShare) * k / retries;
+    const double width = (1.0 - firstShare) / retries;
+    const Progress retryProgress = [&progress, &aborted, from, width](double f)
+    {
+      aborted = aborted || !ReportProgress(progress, from + width * f);
+      return !aborted;
+    };
+    HexExtractionResult retry;
+    status = ExtractHexMeshOnce(input, params, firstFactor * steps[k], retry, retryProgress);
+    ++tried;
+    if (aborted)
+    {
+      return Status::Failure("hex extraction aborted");
+    }
+    if (status && BetterExtraction(retry, result, params.PathMinimumMargin))
+    {
+      discardedSeconds += result.TotalSeconds();
+      retry.Warnings.insert(retry.Warnings.begin(), result.Warnings.begin(), result.Warnings.end());
+      result = std::move(retry);
+    }
+    else
+    {
+      discardedSeconds += Seconds(start);
+      if (!status)
+      {
+        result.Warnings.push_back("the extraction at a scale " +
+          std::string(steps[k] > 1.0 ? "1 % larger" : "1 % smaller") +
+          " failed (the first mesh stands): " + status.Message());
+      }
+    }
+  }
+  result.ScaleRetryCount = tried;
+  result.DiscardedSeconds = discardedSeconds;
   ReportProgress(progress, 1.0);
   return Status::Success();
 }
