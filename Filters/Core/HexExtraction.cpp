@@ -800,6 +800,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   const int retries = std::min(params.ScaleRetries, 2);
   double discardedSeconds = 0.0;
   int tried = 0;
+  std::vector<std::string> failedRetries; // the kept mesh's own warnings stay with it
   for (int k = 0; k < retries && result.ScaledJacobianMin < params.ScaleRetryBelow; ++k)
   {
     const auto start = std::chrono::steady_clock::now();
@@ -821,7 +822,6 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     if (status && BetterExtraction(retry, result, params.PathMinimumMargin))
     {
       discardedSeconds += result.TotalSeconds();
-      retry.Warnings.insert(retry.Warnings.begin(), result.Warnings.begin(), result.Warnings.end());
       result = std::move(retry);
     }
     else
@@ -829,12 +829,13 @@ Status extractHexMesh(const PolycubeTetMesh& input,
       discardedSeconds += Seconds(start);
       if (!status)
       {
-        result.Warnings.push_back("the extraction at a scale " +
+        failedRetries.push_back("the extraction at a scale " +
           std::string(steps[k] > 1.0 ? "1 % larger" : "1 % smaller") +
-          " failed (the first mesh stands): " + status.Message());
+          " failed: " + status.Message());
       }
     }
   }
+  result.Warnings.insert(result.Warnings.end(), failedRetries.begin(), failedRetries.end());
   result.ScaleRetryCount = tried;
   result.DiscardedSeconds = discardedSeconds;
   ReportProgress(progress, 1.0);
