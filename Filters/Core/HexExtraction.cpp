@@ -275,11 +275,11 @@ Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
 
   // 1. Resolution.
   result.LatticeScale = ComputeLatticeScale(polycubeVolume,
-    polycubeArea,
-    inputVolume * diagonal * diagonal * diagonal,
-    params.TargetHexCount,
-    params.TargetEdgeLength,
-    params.Padding) *
+                          polycubeArea,
+                          inputVolume * diagonal * diagonal * diagonal,
+                          params.TargetHexCount,
+                          params.TargetEdgeLength,
+                          params.Padding) *
     scaleFactor;
   result.TargetLatticeScale = result.LatticeScale / scaleFactor;
   if (!(result.LatticeScale > 0.0))
@@ -767,13 +767,10 @@ Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
   return Status::Success();
 }
 
-/// Whether `retry` is a better mesh than `kept`: fewer inverted hexes, then BetterHexQuality.
-bool BetterExtraction(
-  const HexExtractionResult& retry, const HexExtractionResult& kept, double minimumMargin)
+/// The quality summary of an extraction's result.
+HexQualitySummary QualityOf(const HexExtractionResult& result)
 {
-  return BetterHexQuality({ retry.ScaledJacobianMin, retry.ScaledJacobianMean, retry.InvertedHexCount },
-    { kept.ScaledJacobianMin, kept.ScaledJacobianMean, kept.InvertedHexCount },
-    minimumMargin);
+  return { result.ScaledJacobianMin, result.ScaledJacobianMean, result.InvertedHexCount };
 }
 } // namespace
 
@@ -819,7 +816,7 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     {
       return Status::Failure("hex extraction aborted");
     }
-    if (status && BetterExtraction(retry, result, params.PathMinimumMargin))
+    if (status && BetterHexQuality(QualityOf(retry), QualityOf(result), params.PathMinimumMargin))
     {
       discardedSeconds += result.TotalSeconds();
       result = std::move(retry);

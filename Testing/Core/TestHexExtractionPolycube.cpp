@@ -274,9 +274,9 @@ int main(int, char*[])
         const HexQualitySummary now{ r.ScaledJacobianMin, r.ScaledJacobianMean, 0 };
         const HexQualitySummary before{ fewer.ScaledJacobianMin, fewer.ScaledJacobianMean, 0 };
         PCH_CHECK(!BetterHexQuality(before, now, params.PathMinimumMargin));
-        const HexQualitySummary firstQuality{ kept[0].ScaledJacobianMin,
-          kept[0].ScaledJacobianMean,
-          0 };
+        const HexQualitySummary firstQuality{
+          kept[0].ScaledJacobianMin, kept[0].ScaledJacobianMean, 0
+        };
         PCH_CHECK(std::abs(factor - first) < 1e-9 ||
           BetterHexQuality(now, firstQuality, params.PathMinimumMargin));
       }

@@ -194,6 +194,29 @@ int main(int, char*[])
     PCH_CHECK(FieldValue(single, "ValidHexMesh") == 1);
     PCH_CHECK(FieldValue(single, "UntanglingPath") == 1);
     PCH_CHECK(FieldValue(hexes, "ScaledJacobianMin") >= FieldValue(single, "ScaledJacobianMin"));
+
+    // Above ScaleRetryBelow nothing is extracted again; a bar no mesh reaches makes both
+    // retries run, keeps a mesh no worse, and counts their seconds.
+    PCH_CHECK(FieldValue(hexes, "ScaleRetryCount") == 0);
+    PCH_CHECK(FieldValue(hexes, "DiscardedSeconds") == 0.0);
+    vtkNew<vtkHexExtractFilter> retried;
+    retried->SetInputData(MakeBoxPolycube(2, slab));
+    retried->SetTargetHexCount(1000);
+    retried->SetNumberOfDistanceSamples(20000);
+    retried->SetScaleRetryBelow(1.0);
+    retried->Update();
+    vtkUnstructuredGrid* again = retried->GetOutput(0);
+    const double factor = FieldValue(again, "ScaleFactor");
+    std::cout << "slab with forced scale retries: SJ min " << FieldValue(again, "ScaledJacobianMin")
+              << ", kept scale x" << factor << ", discarded "
+              << FieldValue(again, "DiscardedSeconds") << " s\n";
+    PCH_CHECK(FieldValue(again, "ScaleRetryCount") == 2);
+    PCH_CHECK(FieldValue(again, "ValidHexMesh") == 1);
+    PCH_CHECK(
+      FieldValue(again, "ScaledJacobianMin") >= FieldValue(hexes, "ScaledJacobianMin") - 0.01);
+    PCH_CHECK(factor > 0.98 && factor < 1.02);
+    PCH_CHECK(FieldValue(again, "DiscardedSeconds") > 0.0);
+    PCH_CHECK(FieldValue(again, "ExtractionSeconds") >= FieldValue(again, "DiscardedSeconds"));
   }
 
   // Padding without smoothing: the placement of the inner copies lowers no minimum (it ranks the
