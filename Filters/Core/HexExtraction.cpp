@@ -833,6 +833,16 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     }
   }
   result.Warnings.insert(result.Warnings.end(), failedRetries.begin(), failedRetries.end());
+  if (tried > 0 && result.ScaledJacobianMin < params.ScaleRetryBelow)
+  {
+    std::ostringstream message;
+    message << "the smoothed minimum scaled Jacobian stays at " << result.ScaledJacobianMin
+            << ", below " << params.ScaleRetryBelow << ", after " << tried + 1
+            << " extractions at lattice scales 1 % apart; the worst hexes follow the polycube's "
+               "folds and squashed edges (its PolycubeDefect flags), which another polycube "
+               "(e.g. another NormalDifferenceWeight) or another TargetHexCount may avoid";
+    result.Warnings.push_back(message.str());
+  }
   result.ScaleRetryCount = tried;
   result.DiscardedSeconds = discardedSeconds;
   ReportProgress(progress, 1.0);

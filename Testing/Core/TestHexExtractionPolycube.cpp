@@ -18,6 +18,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <string>
 #include <vector>
 
 using namespace polycubehex;
@@ -268,6 +269,11 @@ int main(int, char*[])
       PCH_CHECK(std::abs(factor - first) < 1e-9 || std::abs(factor - 1.01 * first) < 1e-9 ||
         std::abs(factor - 0.99 * first) < 1e-9);
       PCH_CHECK(retries == 0 || r.DiscardedSeconds > 0.0);
+      // A mesh still below the bar after the retries says so.
+      const bool warned = std::any_of(r.Warnings.begin(),
+        r.Warnings.end(),
+        [](const std::string& w) { return w.find("stays at") != std::string::npos; });
+      PCH_CHECK(warned == (retries > 0));
       if (retries > 0)
       {
         const HexExtractionResult& fewer = kept[retries - 1];
