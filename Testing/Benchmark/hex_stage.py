@@ -4,7 +4,7 @@
 can be tuned in seconds instead of re-running the cuts, frames and deformation each time.
 
     PYTHONPATH=build/lib/python3/dist-packages python3.11 Testing/Benchmark/hex_stage.py \
-        ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--no-padding-placement] [--map-smoothing] [--soft-feature-angle 20] [--no-polish] [--mean-search-sweeps 3] [--untangling-paths 2] \
+        ../shared/data/rockerarm.mesh --guidance FrameField --hexes 17594 [--no-smoothing] [--no-padding] [--no-padding-placement] [--map-smoothing] [--soft-feature-angle 20] [--no-polish] [--mean-search-sweeps 3] [--untangling-paths 2] [--scale-retry-below 0.3] \
         [--polish-sharp-edge-angle 60] [--normal-difference-weight 1] [--homotopy-steps 40] [--cache /tmp/polycubes] [--output hexes.vtu] [--worst 10]
 
 The first run writes <cache>/<model>_<guidance>.vtu (the deformation's port 0, its field data
@@ -74,6 +74,7 @@ def main():
     parser.add_argument("--polish-sharp-edge-angle", type=float, default=None)
     parser.add_argument("--mean-search-sweeps", type=int, default=None)
     parser.add_argument("--untangling-paths", type=int, default=None)
+    parser.add_argument("--scale-retry-below", type=float, default=None)
     parser.add_argument("--normal-difference-weight", type=float, default=None,
                         help="the deformation's NormalDifferenceWeight (cached apart)")
     parser.add_argument("--homotopy-steps", type=int, default=0,
@@ -100,6 +101,8 @@ def main():
         extract.SetMeanSearchSweeps(args.mean_search_sweeps)
     if args.untangling_paths is not None:
         extract.SetUntanglingPaths(args.untangling_paths)
+    if args.scale_retry_below is not None:
+        extract.SetScaleRetryBelow(args.scale_retry_below)
     if args.soft_feature_angle is not None:
         extract.SetSoftFeatureAngle(args.soft_feature_angle)
     start = time.perf_counter()
