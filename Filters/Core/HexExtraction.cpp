@@ -589,18 +589,16 @@ Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
       outcome.Released = pathProjection.ReleasedCount();
       outcome.Quality = SummarizeHexQuality(ComputeHexScaledJacobians(outcome.Mesh));
     };
-    // `whole`'s progress over [from, from + width] as a progress over [0, 1].
-    auto part = [](const Progress& whole, double from, double width) -> Progress
-    { return [whole, from, width](double f) { return ReportProgress(whole, from + width * f); }; };
     auto runSecond = [&](UntanglingFork& fork, const Progress& pathProgress)
     {
       const auto secondStart = std::chrono::steady_clock::now();
       statuses[1] = resumeUntangling(
-        fork, outcomes[1].Mesh, outcomes[1].Untangled, part(pathProgress, 0.0, 0.5));
+        fork, outcomes[1].Mesh, outcomes[1].Untangled, ProgressPart(pathProgress, 0.0, 0.5));
       pathUntanglingSeconds[1] = Seconds(secondStart);
       if (statuses[1])
       {
-        smoothPath(outcomes[1], *fork.Projection(), statuses[1], part(pathProgress, 0.5, 0.5));
+        smoothPath(
+          outcomes[1], *fork.Projection(), statuses[1], ProgressPart(pathProgress, 0.5, 0.5));
       }
     };
     // Only the calling thread reports progress (a VTK filter's progress events belong to it);
@@ -669,7 +667,7 @@ Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
         projection,
         HexUntanglingParameters(),
         outcomes[0].Untangled,
-        part(mainProgress, 0.65, 0.5 * mainWidth),
+        ProgressPart(mainProgress, 0.65, 0.5 * mainWidth),
         onStall);
     }
     pathUntanglingSeconds[0] = Seconds(mainStart);
@@ -678,7 +676,7 @@ Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
       smoothPath(outcomes[0],
         projection,
         statuses[0],
-        part(mainProgress, 0.65 + 0.5 * mainWidth, 0.5 * mainWidth));
+        ProgressPart(mainProgress, 0.65 + 0.5 * mainWidth, 0.5 * mainWidth));
     }
     if (!statuses[0])
     {
@@ -687,7 +685,7 @@ Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
     joinSecond();
     if (statuses[0] && pendingFork.Impl)
     {
-      runSecond(pendingFork, part(progress, 0.65 + mainWidth, mainWidth));
+      runSecond(pendingFork, ProgressPart(progress, 0.65 + mainWidth, mainWidth));
     }
     for (const Status& pathStatus : statuses)
     {
@@ -784,9 +782,8 @@ Status extractHexMesh(const PolycubeTetMesh& input,
   // larger, then 1 % smaller, and the best is kept (ScaleRetries).
   const bool mayRetry = params.Smoothing && params.ScaleRetries > 0;
   const double firstShare = mayRetry ? 0.6 : 1.0;
-  const Progress firstProgress = [&progress, firstShare](double f)
-  { return ReportProgress(progress, firstShare * f); };
-  Status status = ExtractHexMeshOnce(input, params, 1.0, result, firstProgress);
+  Status status =
+    ExtractHexMeshOnce(input, params, 1.0, result, ProgressPart(progress, 0.0, firstShare));
   if (!status || !mayRetry)
   {
     return status;
@@ -804,13 +801,9 @@ Status extractHexMesh(const PolycubeTetMesh& input,
     bool aborted = false;
     const double from = firstShare + (1.0 - firstShare) * k / retries;
     const double width = (1.0 - firstShare) / retries;
-    const Progress retryProgress = [&progress, &aborted, from, width](double f)
-    {
-      aborted = aborted || !ReportProgress(progress, from + width * f);
-      return !aborted;
-    };
     HexExtractionResult retry;
-    status = ExtractHexMeshOnce(input, params, firstFactor * steps[k], retry, retryProgress);
+    status = ExtractHexMeshOnce(
+      input, params, firstFactor * steps[k], retry, ProgressPart(progress, from, width, &aborted));
     ++tried;
     if (aborted)
     {

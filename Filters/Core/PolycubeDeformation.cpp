@@ -1829,9 +1829,8 @@ Status ComputePolycube(const TetMesh& input,
   second.StarvedHalvingsPerIteration = frameGuided ? params.StarvedHalvingsPerIteration
                                                    : params.FrameGuidedStarvedHalvingsPerIteration;
   // The first run reports up to 3/4, a retry the rest.
-  const Progress firstProgress = [&progress](double f)
-  { return ReportProgress(progress, 0.75 * f); };
-  Status status = ComputePolycubeOnce(input, first, out, firstProgress, tetFrames, cuts);
+  Status status =
+    ComputePolycubeOnce(input, first, out, ProgressPart(progress, 0.0, 0.75), tetFrames, cuts);
   if (!status)
   {
     return status;
@@ -1839,13 +1838,9 @@ Status ComputePolycube(const TetMesh& input,
   if (out.MinCreaseStretch < params.SquashedRetryStretch)
   {
     bool aborted = false;
-    const Progress secondProgress = [&progress, &aborted](double f)
-    {
-      aborted = aborted || !ReportProgress(progress, 0.75 + 0.25 * f);
-      return !aborted;
-    };
     PolycubeResult retry;
-    status = ComputePolycubeOnce(input, second, retry, secondProgress, tetFrames, cuts);
+    status = ComputePolycubeOnce(
+      input, second, retry, ProgressPart(progress, 0.75, 0.25, &aborted), tetFrames, cuts);
     if (aborted)
     {
       return status;

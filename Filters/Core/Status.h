@@ -39,4 +39,23 @@ inline bool ReportProgress(const Progress& progress, double fraction)
   return !progress || progress(fraction);
 }
 
+/// `whole`'s progress over [from, from + width] as a progress over [0, 1], for one step of a
+/// longer run. With `refused`, a refusal (abort) is remembered there, so that the caller can
+/// tell an aborted step from a failed one.
+inline Progress ProgressPart(const Progress& whole,
+  double from,
+  double width,
+  bool* refused = nullptr)
+{
+  return [whole, from, width, refused](double f)
+  {
+    const bool go = ReportProgress(whole, from + width * f);
+    if (!go && refused)
+    {
+      *refused = true;
+    }
+    return go;
+  };
+}
+
 } // namespace polycubehex
