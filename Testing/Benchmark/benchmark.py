@@ -201,7 +201,7 @@ def run_guidance(name, tets, source, guidance, repeat):
             row["scale (retries) smooth"] = "%.2f (%d)" % (
                 fields.GetArray("ScaleFactor").GetTuple1(0),
                 int(fields.GetArray("ScaleRetryCount").GetTuple1(0)))
-        if not smoothing:
+        else:
             # The raw extraction's rounding (a smoothed mesh below the bar may be another's).
             rounding = fields.GetArray("RoundingInvertedTetCount")
             row["rounding inverted tets"] = int(rounding.GetTuple1(0)) if rounding else 0
