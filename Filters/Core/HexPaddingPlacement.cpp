@@ -1,9 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HexPaddingPlacement.h"
 
+#include "HexCornerQualityEnergy.h"
 #include "HexScaledJacobian.h"
 
+#include <ceres/first_order_function.h>
+#include <ceres/gradient_problem.h>
+#include <ceres/gradient_problem_solver.h>
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -24,6 +30,146 @@ std::pair<double, double> HexQuality(const HexMesh& mesh, const std::vector<int>
     sum += q;
   }
   return { minimum, hexes.empty() ? 0.0 : sum / static_cast<double>(hexes.size()) };
+}
+/// HexCornerQualityEnergy of the hexes at the inner copies as a function of the copies'
+/// positions alone (everything else stays where `mesh` has it).
+class CopiesEnergy final : public ceres::FirstOrderFunction
+{
+public:
+  CopiesEnergy(const HexMesh& mesh,
+    const std::vector<int>& copies,
+    const std::vector<int>& hexes,
+    double epsilon)
+    : Mesh(mesh)
+    , Copies(copies)
+    , HexList(hexes)
+    , Epsilon(epsilon)
+  {
+  }
+
+  int NumParameters() const override { return 3 * static_cast<int>(this->Copies.size()); }
+
+  bool Evaluate(const double* parameters, double* cost, double* gradient) const override
+  {
+    Points x = this->Mesh.Vertices;
+    for (size_t i = 0; i < this->Copies.size(); ++i)
+    {
+      x.row(this->Copies[i]) = Eigen::Map<const Eigen::RowVector3d>(parameters + 3 * i);
+    }
+    Points g;
+    cost[0] = HexCornerQualityEnergy(
+      x, this->Mesh.Cells, this->HexList, this->Epsilon, gradient ? &g : nullptr);
+    if (gradient)
+    {
+      for (size_t i = 0; i < this->Copies.size(); ++i)
+      {
+        Eigen::Map<Eigen::RowVector3d>(gradient + 3 * i) = g.row(this->Copies[i]);
+      }
+    }
+    return std::isfinite(cost[0]);
+  }
+
+private:
+  const HexMesh& Mesh;
+  const std::vector<int>& Copies;
+  const std::vector<int>& HexList;
+  double Epsilon;
+};
+
+/// The joint optimisation of the copies (HexPaddingPlacementParameters::OptimizationIterations):
+/// returns how many copies it moved and kept, and its iterations in `iterations`.
+int OptimizeCopies(HexMesh& mesh,
+  const std::vector<int>& copies,
+  const std::vector<std::vector<int>>& hexesAt,
+  const HexPaddingPlacementParameters& params,
+  int& iterations)
+{
+  iterations = 0;
+  std::vector<int> hexes;
+  for (int v : copies)
+  {
+    hexes.insert(
+      hexes.end(), hexesAt[static_cast<size_t>(v)].begin(), hexesAt[static_cast<size_t>(v)].end());
+  }
+  std::sort(hexes.begin(), hexes.end());
+  hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
+  if (copies.empty() || params.OptimizationIterations <= 0)
+  {
+    return 0;
+  }
+  // Each copy's floor: the smallest scaled Jacobian of its hexes before, and how many of them
+  // were inverted.
+  auto inverted = [&](int v)
+  {
+    int count = 0;
+    for (int h : hexesAt[static_cast<size_t>(v)])
+    {
+      count += HexScaledJacobian(mesh, h) <= 0.0 ? 1 : 0;
+    }
+    return count;
+  };
+  std::vector<double> floor(copies.size());
+  std::vector<int> invertedBefore(copies.size());
+  for (size_t i = 0; i < copies.size(); ++i)
+  {
+    floor[i] = HexQuality(mesh, hexesAt[static_cast<size_t>(copies[i])]).first;
+    invertedBefore[i] = inverted(copies[i]);
+  }
+  const double meanBefore = HexQuality(mesh, hexes).second;
+  const Points start = mesh.Vertices;
+
+  std::vector<double> parameters(3 * copies.size());
+  for (size_t i = 0; i < copies.size(); ++i)
+  {
+    Eigen::Map<Eigen::RowVector3d>(parameters.data() + 3 * i) = mesh.Vertices.row(copies[i]);
+  }
+  ceres::GradientProblem problem(
+    new CopiesEnergy(mesh, copies, hexes, params.OptimizationEpsilon)); // owns the function
+  ceres::GradientProblemSolver::Options options;
+  options.line_search_direction_type = ceres::LBFGS;
+  options.max_num_iterations = params.OptimizationIterations;
+  options.logging_type = ceres::SILENT;
+  options.function_tolerance = 1e-7;
+  options.gradient_tolerance = 1e-10;
+  ceres::GradientProblemSolver::Summary summary;
+  ceres::Solve(options, problem, parameters.data(), &summary);
+  iterations = static_cast<int>(summary.iterations.size());
+  for (size_t i = 0; i < copies.size(); ++i)
+  {
+    const Eigen::RowVector3d p = Eigen::Map<const Eigen::RowVector3d>(parameters.data() + 3 * i);
+    if (p.allFinite())
+    {
+      mesh.Vertices.row(copies[i]) = p;
+    }
+  }
+  // A copy whose hexes lost in their minimum or gained an inverted hex goes back; that can cost a
+  // neighbour's hexes, so again until none does (each copy goes back at most once).
+  std::vector<bool> moved(copies.size());
+  for (size_t i = 0; i < copies.size(); ++i)
+  {
+    moved[i] = mesh.Vertices.row(copies[i]) != start.row(copies[i]);
+  }
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (size_t i = 0; i < copies.size(); ++i)
+    {
+      if (moved[i] &&
+        (HexQuality(mesh, hexesAt[static_cast<size_t>(copies[i])]).first < floor[i] ||
+          inverted(copies[i]) > invertedBefore[i]))
+      {
+        mesh.Vertices.row(copies[i]) = start.row(copies[i]);
+        moved[i] = false;
+        changed = true;
+      }
+    }
+  }
+  if (!(HexQuality(mesh, hexes).second > meanBefore))
+  {
+    mesh.Vertices = start; // the energy is a proxy for the mean: keep what is sure
+    return 0;
+  }
+  return static_cast<int>(std::count(moved.begin(), moved.end(), true));
 }
 } // namespace
 
@@ -106,7 +252,8 @@ Status placePaddingCopies(HexMesh& mesh,
     const double norm = inward.row(outer).norm();
     if (norm > 0.0 && edgeCount[static_cast<size_t>(outer)] > 0)
     {
-      const double edge = edgeSum[static_cast<size_t>(outer)] / edgeCount[static_cast<size_t>(outer)];
+      const double edge =
+        edgeSum[static_cast<size_t>(outer)] / edgeCount[static_cast<size_t>(outer)];
       pushed.row(v) =
         mesh.Vertices.row(outer) + (params.Thickness * edge / norm) * inward.row(outer);
     }
@@ -223,9 +370,11 @@ Status placePaddingCopies(HexMesh& mesh,
       break;
     }
   }
+  result.OptimizedCount =
+    OptimizeCopies(mesh, copies, hexesAt, params, result.OptimizationIterations);
   for (int v : copies)
   {
-    result.MovedCount += blend[static_cast<size_t>(v)] != 0.0 ? 1 : 0;
+    result.MovedCount += mesh.Vertices.row(v) != mapped.row(v) ? 1 : 0;
   }
   result.MeanAfter = paddingMean();
   result.MinAfter = copiesMin();

@@ -42,15 +42,28 @@ struct HexPaddingPlacementParameters
   double SearchBelow = 0.1;
   double SearchStep = 0.25;
   int SearchLevels = 5;
+  /// Last, all inner copies move together to minimise HexCornerQualityEnergy over their hexes
+  /// (L-BFGS, at most OptimizationIterations iterations, default 200; 0 turns it off; the
+  /// energy's eps OptimizationEpsilon, default 0.05), and a copy whose hexes end with a smaller
+  /// minimum than before goes back, until none does. One copy at a time cannot reach what they
+  /// reach together: at a polycube edge on a smooth part of the surface the hex inside needs the
+  /// copies of the whole edge deeper at once. By measurement, raw extraction (mean scaled
+  /// Jacobian without -> with; minima unchanged): kitten closed form at 11,941 hexes 0.8985 ->
+  /// 0.9100 (the hexes inside the edges 0.44 -> 0.72), fertility l1 at 17,910 0.8449 -> 0.8672,
+  /// fertility closed form 0.8798 -> 0.8970, rockerarm l1 0.8967 -> 0.9050.
+  int OptimizationIterations = 200;
+  double OptimizationEpsilon = 0.05;
 };
 
 struct HexPaddingPlacementResult
 {
-  int MovedCount = 0; ///< inner copies that left their mapped position
+  int MovedCount = 0;     ///< inner copies that left their mapped position
   double MinBefore = 0.0; ///< smallest scaled Jacobian of the hexes at inner copies, before
   double MinAfter = 0.0;
   double MeanBefore = 0.0; ///< mean scaled Jacobian of the padding hexes, before
   double MeanAfter = 0.0;
+  int OptimizedCount = 0;         ///< copies the joint optimisation moved and kept there
+  int OptimizationIterations = 0; ///< its L-BFGS iterations
 };
 
 /// Moves the inner copies of the padding layer of `mesh` (its last `paddingHexCount` hexes, each
