@@ -60,7 +60,9 @@ public:
   /// With Padding and without Smoothing: place each inner copy of the padding layer between its
   /// position mapped from the polycube and its boundary vertex pushed along the surface normal,
   /// where its hexes are best; where they stay poor (scaled Jacobian below 0.1), the copy then
-  /// walks off that segment to a better point. No other vertex moves. With Smoothing the untangling
+  /// walks off that segment to a better point; last, all copies move together to raise their
+  /// hexes' scaled Jacobians (a copy whose hexes would lose their minimum stays). No other vertex
+  /// moves. With Smoothing the untangling
   /// and the sweeps optimise the inner copies from their mapped positions instead (measured
   /// better). Default on.
   vtkSetMacro(PaddingPlacement, bool);

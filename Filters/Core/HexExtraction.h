@@ -55,7 +55,8 @@ struct HexExtractionParameters
   double PaddingThickness = 1.0 / 3.0;
   /// Without Smoothing: place each inner copy of the padding layer, in the input's space,
   /// between its mapped position and its boundary vertex pushed along the surface normal, where
-  /// its hexes are best (HexPaddingPlacement.h; default on). With Smoothing the inner copies are
+  /// its hexes are best, then move the copies together to raise their hexes' scaled Jacobians
+  /// (HexPaddingPlacement.h; default on). With Smoothing the inner copies are
   /// optimised by the untangling and the sweeps, from their mapped positions (measured better).
   bool PaddingPlacement = true;
   /// Quality-guarded Laplacian smoothing after extraction (default on; the paper has none).
