@@ -31,6 +31,7 @@ std::pair<double, double> HexQuality(const HexMesh& mesh, const std::vector<int>
   }
   return { minimum, hexes.empty() ? 0.0 : sum / static_cast<double>(hexes.size()) };
 }
+
 /// HexCornerQualityEnergy of the hexes at the inner copies as a function of the copies'
 /// positions alone (everything else stays where `mesh` has it).
 class CopiesEnergy final : public ceres::FirstOrderFunction
