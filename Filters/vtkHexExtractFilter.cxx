@@ -263,6 +263,8 @@ int vtkHexExtractFilter::RequestData(vtkInformation*,
   polycubehex::SetFieldValue<vtkIntArray>(fields, "PaddingHexCount", result.PaddingHexCount);
   polycubehex::SetFieldValue<vtkIntArray>(
     fields, "PlacedPaddingVertexCount", result.PlacedPaddingVertexCount);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "OptimizedPaddingVertexCount", result.OptimizedPaddingVertexCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields,
     "PaddingScaledJacobianMeanBeforePlacement",
     result.PaddingScaledJacobianMeanBeforePlacement);

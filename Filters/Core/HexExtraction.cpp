@@ -499,6 +499,7 @@ Status ExtractHexMeshOnce(const PolycubeTetMesh& input,
         return status;
       }
       result.PlacedPaddingVertexCount = placed.MovedCount;
+      result.OptimizedPaddingVertexCount = placed.OptimizedCount;
       result.PaddingScaledJacobianMeanBeforePlacement = placed.MeanBefore;
       result.PaddingScaledJacobianMean = placed.MeanAfter;
     }

@@ -157,6 +157,8 @@ struct HexExtractionResult
   /// Inner copies PaddingPlacement moved off their mapped position, and the padding hexes'
   /// mean scaled Jacobian before and after it.
   int PlacedPaddingVertexCount = 0;
+  /// Of those, the copies the joint optimisation after the search moved and kept there.
+  int OptimizedPaddingVertexCount = 0;
   double PaddingScaledJacobianMeanBeforePlacement = 0.0;
   double PaddingScaledJacobianMean = 0.0;
   double ScaledJacobianMin = 0.0;

@@ -240,17 +240,21 @@ int main(int, char*[])
                 << ", padding hexes' mean "
                 << FieldValue(hexes, "PaddingScaledJacobianMeanBeforePlacement") << " -> "
                 << FieldValue(hexes, "PaddingScaledJacobianMean") << ", "
-                << FieldValue(hexes, "PlacedPaddingVertexCount") << " copies placed\n";
+                << FieldValue(hexes, "PlacedPaddingVertexCount") << " copies placed ("
+                << FieldValue(hexes, "OptimizedPaddingVertexCount") << " by the joint move)\n";
       PCH_CHECK(FieldValue(hexes, "ValidHexMesh") == 1);
       if (placement)
       {
         PCH_CHECK(FieldValue(hexes, "PlacedPaddingVertexCount") > 0);
+        PCH_CHECK(FieldValue(hexes, "OptimizedPaddingVertexCount") <=
+          FieldValue(hexes, "PlacedPaddingVertexCount"));
         PCH_CHECK(FieldValue(hexes, "PaddingScaledJacobianMean") >=
           FieldValue(hexes, "PaddingScaledJacobianMeanBeforePlacement") - 0.01);
       }
       else
       {
         PCH_CHECK(FieldValue(hexes, "PlacedPaddingVertexCount") == 0);
+        PCH_CHECK(FieldValue(hexes, "OptimizedPaddingVertexCount") == 0);
       }
     }
     PCH_CHECK(minimum[1] >= minimum[0]);
