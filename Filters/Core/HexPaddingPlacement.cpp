@@ -86,6 +86,10 @@ int OptimizeCopies(HexMesh& mesh,
   int& iterations)
 {
   iterations = 0;
+  if (copies.empty() || params.OptimizationIterations <= 0)
+  {
+    return 0;
+  }
   std::vector<int> hexes;
   for (int v : copies)
   {
@@ -94,27 +98,23 @@ int OptimizeCopies(HexMesh& mesh,
   }
   std::sort(hexes.begin(), hexes.end());
   hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
-  if (copies.empty() || params.OptimizationIterations <= 0)
+  // A copy's floor: the smallest scaled Jacobian of its hexes, and how many of them are
+  // inverted, in one pass over them.
+  auto floorAt = [&](int v)
   {
-    return 0;
-  }
-  // Each copy's floor: the smallest scaled Jacobian of its hexes before, and how many of them
-  // were inverted.
-  auto inverted = [&](int v)
-  {
-    int count = 0;
+    std::pair<double, int> result(std::numeric_limits<double>::max(), 0);
     for (int h : hexesAt[static_cast<size_t>(v)])
     {
-      count += HexScaledJacobian(mesh, h) <= 0.0 ? 1 : 0;
+      const double q = HexScaledJacobian(mesh, h);
+      result.first = std::min(result.first, q);
+      result.second += q <= 0.0 ? 1 : 0;
     }
-    return count;
+    return result;
   };
-  std::vector<double> floor(copies.size());
-  std::vector<int> invertedBefore(copies.size());
+  std::vector<std::pair<double, int>> floorBefore(copies.size());
   for (size_t i = 0; i < copies.size(); ++i)
   {
-    floor[i] = HexQuality(mesh, hexesAt[static_cast<size_t>(copies[i])]).first;
-    invertedBefore[i] = inverted(copies[i]);
+    floorBefore[i] = floorAt(copies[i]);
   }
   const double meanBefore = HexQuality(mesh, hexes).second;
   const Points start = mesh.Vertices;
@@ -155,9 +155,12 @@ int OptimizeCopies(HexMesh& mesh,
     changed = false;
     for (size_t i = 0; i < copies.size(); ++i)
     {
-      if (moved[i] &&
-        (HexQuality(mesh, hexesAt[static_cast<size_t>(copies[i])]).first < floor[i] ||
-          inverted(copies[i]) > invertedBefore[i]))
+      if (!moved[i])
+      {
+        continue;
+      }
+      const std::pair<double, int> now = floorAt(copies[i]);
+      if (now.first < floorBefore[i].first || now.second > floorBefore[i].second)
       {
         mesh.Vertices.row(copies[i]) = start.row(copies[i]);
         moved[i] = false;
@@ -356,7 +359,6 @@ Status placePaddingCopies(HexMesh& mesh,
               bestQuality = quality;
               improved = true;
               moved = true;
-              blend[static_cast<size_t>(v)] = -1.0; // off the segment
             }
             else
             {
