@@ -94,6 +94,7 @@ int vtkFrameFieldFilter::RequestData(vtkInformation*,
   // 3. Call the core.
   polycubehex::FrameFieldParameters params;
   params.BoundaryAlignmentWeight = this->BoundaryAlignmentWeight;
+  params.CutMeshBoundaryAlignmentWeight = this->CutMeshBoundaryAlignmentWeight;
   params.AlignmentWeight = this->AlignmentWeight;
   params.NormalDifferenceWeight = this->NormalDifferenceWeight;
   params.NormalDifferenceMaxAngle = this->NormalDifferenceMaxAngle;
@@ -165,10 +166,14 @@ int vtkFrameFieldFilter::RequestData(vtkInformation*,
     fields, names::BoundaryAlignmentError, result.BoundaryAlignmentError);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields, names::FrameEnergy, result.FrameEnergy);
   polycubehex::SetFieldValue<vtkIntArray>(fields, names::FrameIterations, result.FrameIterations);
+  polycubehex::SetFieldValue<vtkDoubleArray>(
+    fields, "InitialAlignmentWeight", result.InitialAlignmentWeight);
+  polycubehex::SetFieldValue<vtkIntArray>(
+    fields, "AlignedSingularEdgeCount", result.AlignedSingularEdgeCount);
   polycubehex::SetFieldValue<vtkDoubleArray>(fields,
     "FrameSeconds",
     result.InitialFieldSeconds + result.MatchingSeconds + result.OptimizationSeconds +
-      result.MeasureSeconds);
+      result.MeasureSeconds + result.DiscardedSeconds);
   output->SetFieldData(fields);
 
   // Glyph points: every stride-th tet centre.
@@ -226,6 +231,8 @@ void vtkFrameFieldFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "BoundaryAlignmentWeight: " << this->BoundaryAlignmentWeight << "\n";
+  os << indent << "CutMeshBoundaryAlignmentWeight: " << this->CutMeshBoundaryAlignmentWeight
+     << "\n";
   os << indent << "AlignmentWeight: " << this->AlignmentWeight << "\n";
   os << indent << "NormalDifferenceWeight: " << this->NormalDifferenceWeight << "\n";
   os << indent << "NormalDifferenceMaxAngle: " << this->NormalDifferenceMaxAngle << "\n";

@@ -50,13 +50,16 @@ Status CheckMesh(const TetMesh& mesh, const FrameFieldParameters& p)
   {
     return Status::Failure("The mesh has non-finite vertex coordinates.");
   }
-  if (!(p.BoundaryAlignmentWeight > 0.0) || !(p.AlignmentWeight >= 0.0) ||
-    !(p.NormalDifferenceWeight >= 0.0) ||
-    !(p.NormalDifferenceMaxAngle >= 0.0 && p.NormalDifferenceMaxAngle <= 180.0) || !(p.OrthogonalityWeight > 0.0) || !(p.L1Epsilon > 0.0) ||
-    !(p.GradientTolerance >= 0.0) || p.MaxIterations < 0)
+  if (!(p.BoundaryAlignmentWeight > 0.0) || !(p.CutMeshBoundaryAlignmentWeight >= 0.0) ||
+    !(p.AlignmentWeight >= 0.0) || !(p.NormalDifferenceWeight >= 0.0) ||
+    !(p.NormalDifferenceMaxAngle >= 0.0 && p.NormalDifferenceMaxAngle <= 180.0) ||
+    !(p.OrthogonalityWeight > 0.0) || !(p.L1Epsilon > 0.0) || !(p.GradientTolerance >= 0.0) ||
+    p.MaxIterations < 0)
   {
-    return Status::Failure("Invalid frame field parameters: weights and epsilon must be positive "
-                           "(w_a and w_d may be 0), the tolerance and iterations non-negative.");
+    return Status::Failure(
+      "Invalid frame field parameters: weights and epsilon must be positive "
+      "(w_a, w_d and the cut-mesh alignment weight may be 0), the tolerance and iterations "
+      "non-negative.");
   }
   return Status::Success();
 }
@@ -137,15 +140,16 @@ void StoreFrames(const std::vector<Eigen::Matrix3d>& frames,
   }
 }
 
-} // namespace
-
-Status ComputeFrameField(const TetMesh& input,
+/// Steps 1-5 with the initial field's boundary alignment weight `initialWeight`.
+Status ComputeFrameFieldOnce(const TetMesh& input,
   const CutFaces& cuts,
   const FrameFieldParameters& parameters,
+  double initialWeight,
   FrameFieldResult& out,
   const Progress& progress)
 {
   out = FrameFieldResult();
+  out.InitialAlignmentWeight = initialWeight;
   // Work on a copy with a unit bounding-box diagonal (DESIGN.md "Scale"); rotations and the
   // relative measures need no mapping back.
   TetMesh mesh;
@@ -184,7 +188,7 @@ Status ComputeFrameField(const TetMesh& input,
   auto clock = std::chrono::steady_clock::now();
   std::vector<Eigen::Matrix3d> frames;
   OctahedralFieldParameters initial;
-  initial.BoundaryAlignmentWeight = parameters.BoundaryAlignmentWeight;
+  initial.BoundaryAlignmentWeight = initialWeight;
   status =
     ComputeOctahedralField(mesh, topology, initial, frames, nullptr, Stage(progress, 0.0, 0.2));
   if (!status)
@@ -292,6 +296,67 @@ Status ComputeFrameField(const TetMesh& input,
   out.InitialBoundaryAlignmentError = ComputeBoundaryAlignmentError(mesh, topology, initialFrames);
   out.MeasureSeconds = Seconds(clock);
   ReportProgress(progress, 1.0);
+  return Status::Success();
+}
+
+/// Whether the mesh has cut faces (CheckCuts validates them later).
+bool HasCutFaces(const CutFaces& cuts)
+{
+  return cuts.Ids.rows() > 0 && (cuts.Ids.array() >= 0).any();
+}
+} // namespace
+
+Status ComputeFrameField(const TetMesh& input,
+  const CutFaces& cuts,
+  const FrameFieldParameters& parameters,
+  FrameFieldResult& out,
+  const Progress& progress)
+{
+  // On a mesh with cuts the field may turn with the boundary around its handles, the cuts'
+  // transitions taking up the turn, so it first starts from a tightly aligned initial field; the
+  // paper's remedy (§6, Figure 13) when singular lines then stay inside is a smaller alignment
+  // weight, BoundaryAlignmentWeight here.
+  const bool aligned = parameters.CutMeshBoundaryAlignmentWeight > 0.0 && HasCutFaces(cuts);
+  if (!aligned)
+  {
+    return ComputeFrameFieldOnce(
+      input, cuts, parameters, parameters.BoundaryAlignmentWeight, out, progress);
+  }
+  auto clock = std::chrono::steady_clock::now();
+  Status status = ComputeFrameFieldOnce(input,
+    cuts,
+    parameters,
+    parameters.CutMeshBoundaryAlignmentWeight,
+    out,
+    Stage(progress, 0.0, 0.5));
+  const double alignedSeconds = Seconds(clock);
+  out.AlignedSingularEdgeCount = out.SingularEdgeCount;
+  if (!status || out.SingularEdgeCount == 0)
+  {
+    ReportProgress(progress, 1.0);
+    return status;
+  }
+  clock = std::chrono::steady_clock::now();
+  FrameFieldResult fallback;
+  status = ComputeFrameFieldOnce(input,
+    cuts,
+    parameters,
+    parameters.BoundaryAlignmentWeight,
+    fallback,
+    Stage(progress, 0.5, 1.0));
+  if (!status)
+  {
+    return status;
+  }
+  const double fallbackSeconds = Seconds(clock);
+  const int alignedSingularEdges = out.SingularEdgeCount;
+  const bool fallbackBetter = fallback.SingularEdgeCount < alignedSingularEdges;
+  if (fallbackBetter)
+  {
+    out = std::move(fallback);
+  }
+  out.AlignedSingularEdgeCount = alignedSingularEdges;
+  out.DiscardedSeconds = fallbackBetter ? alignedSeconds : fallbackSeconds;
   return Status::Success();
 }
 

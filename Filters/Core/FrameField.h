@@ -42,6 +42,21 @@ struct FrameFieldParameters
   /// ones): kitten 10: 2 -> 0; 30: 181 (4.4%) -> 0; 100: 313 (10%) -> 101 (15.6% deep);
   /// rockerarm 30: 0 -> 0; 100: 3 -> 0; 1000: 172 (5.7%). Range (0, inf).
   double BoundaryAlignmentWeight = 30.0;
+  /// On a mesh with cuts, the initial field is first computed with this weight instead, and
+  /// BoundaryAlignmentWeight is the fallback: it runs only when the field from this one keeps
+  /// singular edges after energy (1), and the field with fewer is kept (the paper's remedy, §6
+  /// and Figure 13: a smaller alignment weight pushes the singular lines to the boundary). A
+  /// field that follows the boundary tightly turns with it around the handles, and the cuts'
+  /// transitions take up the turn; a straighter one crosses the handles unturned, with identity
+  /// transitions, and the polycube needs more corners. Measured, closed form (corners; smoothed
+  /// scaled Jacobian min / mean): 3holes, transitions I I I -> two half turns, 32 -> 16 corners,
+  /// 0.768 / 0.955 -> 0.806 / 0.962; rockerarm, I -> a quarter turn, 62 -> 52, 0.591 / 0.938 ->
+  /// 0.667 / 0.955; fertility 90 -> 68, 0.620 / 0.940 -> 0.649 / 0.935 (but more vertices off
+  /// their planes); kitten keeps singular edges at 1000 (127) and falls back; the torus does not
+  /// change. Not used without cuts, where tighter alignment only bends the field more (bunny 40
+  /// -> 58 corners, spot 68 -> 74, elephant keeps singular edges). Default 1000; 0 turns it off
+  /// (BoundaryAlignmentWeight everywhere). Range [0, inf).
+  double CutMeshBoundaryAlignmentWeight = 1000.0;
   /// w_a of eq. (1): the smoothed l1 normal alignment (4). Range [0, inf).
   double AlignmentWeight = 0.1;
   /// w_d of eq. (1): the normal difference (5). Range [0, inf).
@@ -82,6 +97,11 @@ struct FrameFieldResult
   int InteriorSingularEdgeCount = 0; ///< no vertex on the boundary
   double MaxSingularEdgeDepth = 0.0; ///< relative to the bounding-box diagonal; 0 if none
   int InitialSingularEdgeCount = 0;  ///< of the initial spherical-harmonics field
+  /// The initial field's boundary alignment weight of the kept field
+  /// (CutMeshBoundaryAlignmentWeight or BoundaryAlignmentWeight).
+  double InitialAlignmentWeight = 0.0;
+  /// Singular edges of the field from CutMeshBoundaryAlignmentWeight; -1 when it did not run.
+  int AlignedSingularEdgeCount = -1;
 
   double BoundaryAlignmentError = 0.0;        ///< degrees, final field
   double InitialBoundaryAlignmentError = 0.0; ///< degrees, initial field
@@ -96,6 +116,7 @@ struct FrameFieldResult
   double MatchingSeconds = 0.0;
   double OptimizationSeconds = 0.0;
   double MeasureSeconds = 0.0;
+  double DiscardedSeconds = 0.0; ///< the field computed and not kept (the fallback's rule)
 };
 
 /// Computes the frame field of §3 on a tet mesh with optional cuts.

@@ -50,9 +50,13 @@ double SignedVolume(const Points& x, const Tets& cells, int t)
 /// Refuses a mesh with a non-positive tet; `volume` receives the total volume.
 Status CheckPositive(const Points& x, const Tets& cells, const char* space, double& volume)
 {
-  // Relative to the bounding-box diagonal cubed: flat tets count as inverted.
+  // Flat tets count as inverted: a volume below 1e-14 of the bounding-box diagonal cubed that
+  // is also below 1e-12 of the cube of the tet's own longest edge (a height under about 1e-11 of
+  // it, where barycentric coordinates lose their digits). The second test spares a small, thin
+  // but sound tet that a flattening leaves at a polycube's fold (rockerarm's closed form at
+  // CutMeshBoundaryAlignmentWeight 1000 has one of 1.1e-14 of the diagonal cubed).
   const double diagonal = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
-  const double epsilon = 1e-14 * diagonal * diagonal * diagonal;
+  const double meshFloor = 1e-14 * diagonal * diagonal * diagonal;
   int bad = 0;
   int first = -1;
   double firstVolume = 0.0;
@@ -61,7 +65,16 @@ Status CheckPositive(const Points& x, const Tets& cells, const char* space, doub
   {
     const double v = SignedVolume(x, cells, t);
     volume += v;
-    if (!(v > epsilon))
+    double longest = 0.0;
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = i + 1; j < 4; ++j)
+      {
+        longest = std::max(longest, (x.row(cells(t, i)) - x.row(cells(t, j))).squaredNorm());
+      }
+    }
+    longest = std::sqrt(longest);
+    if (!(v > std::min(meshFloor, 1e-12 * longest * longest * longest)))
     {
       first = bad == 0 ? t : first;
       firstVolume = bad == 0 ? v : firstVolume;

@@ -204,6 +204,10 @@ int main(int, char*[])
     FrameFieldResult result;
     PCH_CHECK(Run("torus", mesh, CutFaces(), parameters, result));
     PCH_CHECK(result.BoundaryAlignmentError < 10.0);
+    // Without cuts only BoundaryAlignmentWeight runs.
+    PCH_CHECK(result.AlignedSingularEdgeCount == -1);
+    PCH_CHECK(result.InitialAlignmentWeight == parameters.BoundaryAlignmentWeight);
+    PCH_CHECK(result.DiscardedSeconds == 0.0);
 
     const CutFaces cuts = SeamCut(
       mesh, static_cast<int>(disk.Points.size()), static_cast<int>(disk.Triangles.size()), layers);
@@ -218,6 +222,23 @@ int main(int, char*[])
       std::cout << "  transition\n" << pi << "\n";
       PCH_CHECK(pi == Eigen::Matrix3i::Identity());
     }
+    // With a cut the tightly aligned field runs first; without singular edges it is kept, and
+    // no fallback runs.
+    std::cout << "  aligned attempt: " << result.AlignedSingularEdgeCount
+              << " singular edges; kept weight " << result.InitialAlignmentWeight << "\n";
+    PCH_CHECK(result.AlignedSingularEdgeCount == 0);
+    PCH_CHECK(result.InitialAlignmentWeight == parameters.CutMeshBoundaryAlignmentWeight);
+    PCH_CHECK(result.DiscardedSeconds == 0.0);
+
+    // Turned off, the cut torus uses BoundaryAlignmentWeight alone.
+    FrameFieldParameters straight = parameters;
+    straight.CutMeshBoundaryAlignmentWeight = 0.0;
+    FrameFieldResult plain;
+    PCH_CHECK(Run("torus with a cut, no aligned attempt", mesh, cuts, straight, plain));
+    PCH_CHECK(plain.AlignedSingularEdgeCount == -1);
+    PCH_CHECK(plain.InitialAlignmentWeight == parameters.BoundaryAlignmentWeight);
+    // (The fallback itself is tested on kitten, whose aligned field keeps singular lines:
+    // TestClosedFormCorners.)
   }
 
   // A square torus whose section turns by a quarter turn once around, cut across the tube.

@@ -127,9 +127,18 @@ assert all(float(c).is_integer() for c in shift.GetTuple3(0))
 assert closedHexes.MeanSearchSweeps == 3
 laplacianOnly = HexExtract(Input=closed, TargetHexCount=2000, MeanSearchSweeps=0)  # noqa: F821
 laplacianOnly.UpdatePipeline()
-print("torus, closed-form hexes: SJ mean %.4f, without the sweeps for the mean %.4f" % (
-    field(closedHexes, "ScaledJacobianMean"), field(laplacianOnly, "ScaledJacobianMean")))
-assert field(closedHexes, "ScaledJacobianMean") > field(laplacianOnly, "ScaledJacobianMean")
+# Compared with the polish off on both: the polish's own sweeps take back part of the mean by
+# an amount of their own (on this torus they leave the two within 0.0002, either way round).
+sweepsUnpolished = HexExtract(Input=closed, TargetHexCount=2000, Polish=0)  # noqa: F821
+laplacianUnpolished = HexExtract(  # noqa: F821
+    Input=closed, TargetHexCount=2000, Polish=0, MeanSearchSweeps=0)
+sweepsUnpolished.UpdatePipeline()
+laplacianUnpolished.UpdatePipeline()
+print("torus, closed-form hexes (no polish): SJ mean %.4f, without the sweeps for the mean %.4f" % (
+    field(sweepsUnpolished, "ScaledJacobianMean"),
+    field(laplacianUnpolished, "ScaledJacobianMean")))
+assert field(sweepsUnpolished, "ScaledJacobianMean") > \
+    field(laplacianUnpolished, "ScaledJacobianMean") + 5e-4
 # The polish of the worst hexes (on by default) lifts the minimum the sweeps left, and is off
 # when the property says so (both without the sweeps for the mean, which on this torus leave
 # the polish almost nothing: 0.8564 -> 0.8565).
