@@ -331,7 +331,11 @@ Status ComputeFrameField(const TetMesh& input,
     Stage(progress, 0.0, 0.5));
   const double alignedSeconds = Seconds(clock);
   out.AlignedSingularEdgeCount = out.SingularEdgeCount;
-  if (!status || out.SingularEdgeCount == 0)
+  if (!status)
+  {
+    return status;
+  }
+  if (out.SingularEdgeCount == 0)
   {
     ReportProgress(progress, 1.0);
     return status;
