@@ -418,7 +418,10 @@ Status FramePoissonStart(WorkMesh& mesh,
     }
     return Status::Failure("ComputePolycube: the frame-guided map of the cut mesh (eq. 7 with the "
                            "cut transitions) inverts " +
-      std::to_string(inverted) + " tets; the frame field does not describe a valid map");
+      std::to_string(inverted) +
+      " tets; the frame field does not describe a valid map. A field from other settings may "
+      "(the frame filter's CutMeshBoundaryAlignmentWeight 0, or another "
+      "BoundaryAlignmentWeight), or Uniform guidance needs none");
   }
   PolycubeEnergyTerms fit;
   energy.Evaluate(x.data(), fit);
