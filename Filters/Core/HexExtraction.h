@@ -240,8 +240,9 @@ struct HexExtractionResult
 
 /// Extracts an all-hex mesh from a polycube-deformed tet mesh.
 /// @return Failure with a readable message when the input is refused (sizes, an inverted or
-///         flat tet in either space, missing or inconsistent labels), when rounding cannot keep
-///         every chart (resolution too low) or when no hex fits.
+///         flat tet in either space: a volume under 1e-14 of the diagonal cubed and under
+///         1e-12 of its own longest edge cubed; missing or inconsistent labels), when rounding
+///         cannot keep every chart (resolution too low) or when no hex fits.
 Status extractHexMesh(const PolycubeTetMesh& input,
   const HexExtractionParameters& params,
   HexExtractionResult& result,

@@ -563,6 +563,34 @@ void TestPadding()
   PCH_CHECK(BoundaryDistance(b, bent) < 1e-9);
 }
 
+/// A thin tet is not a flat one: a bar of 40 cubes whose last cube is squeezed to 1e-9 of its
+/// length has tets of volume 1.7e-10, under 1e-14 of the bar's diagonal cubed, but sound for
+/// their size (a height of 1e-9 of their edges); extraction takes them. Squeezed to nothing,
+/// the same tets are flat and refused.
+void TestThinTets()
+{
+  PolycubeTetMesh thin = CubeComplex(BlockCells(40, 1, 1));
+  PolycubeTetMesh flat = thin;
+  for (int v = 0; v < thin.PolycubeVertices.rows(); ++v)
+  {
+    if (thin.PolycubeVertices(v, 0) == 40.0)
+    {
+      thin.PolycubeVertices(v, 0) = thin.OriginalVertices(v, 0) = 39.0 + 1e-9;
+      flat.PolycubeVertices(v, 0) = flat.OriginalVertices(v, 0) = 39.0;
+    }
+  }
+  HexExtractionResult result;
+  const Status accepted = extractHexMesh(thin, Raw(40), result);
+  std::cout << "thin tets: " << (accepted ? "extracted, " : accepted.Message()) << result.HexCount
+            << " hexes" << std::endl;
+  PCH_CHECK(accepted.Ok());
+  PCH_CHECK(result.HexCount > 0);
+  const Status refused = extractHexMesh(flat, Raw(40), result);
+  std::cout << "flat tets: " << refused.Message() << std::endl;
+  PCH_CHECK(!refused.Ok());
+  PCH_CHECK(refused.Message().find("inverted or flat") != std::string::npos);
+}
+
 /// Inputs extraction must refuse, each with a message that says why.
 void TestRefusals()
 {
@@ -732,6 +760,7 @@ int main(int, char*[])
   TestOverlappingHelix();
   TestPadding();
   TestRefusals();
+  TestThinTets();
   TestStaircase();
   TestTiming();
   return PCH_TEST_RESULT();
