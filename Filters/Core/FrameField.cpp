@@ -330,12 +330,13 @@ Status ComputeFrameField(const TetMesh& input,
     out,
     Stage(progress, 0.0, 0.5));
   const double alignedSeconds = Seconds(clock);
-  out.AlignedSingularEdgeCount = out.SingularEdgeCount;
   if (!status)
   {
     return status;
   }
-  if (out.SingularEdgeCount == 0)
+  const int alignedSingularEdges = out.SingularEdgeCount;
+  out.AlignedSingularEdgeCount = alignedSingularEdges;
+  if (alignedSingularEdges == 0)
   {
     ReportProgress(progress, 1.0);
     return status;
@@ -352,15 +353,16 @@ Status ComputeFrameField(const TetMesh& input,
   {
     return status;
   }
-  const double fallbackSeconds = Seconds(clock);
-  const int alignedSingularEdges = out.SingularEdgeCount;
-  const bool fallbackBetter = fallback.SingularEdgeCount < alignedSingularEdges;
-  if (fallbackBetter)
+  if (fallback.SingularEdgeCount < alignedSingularEdges)
   {
     out = std::move(fallback);
+    out.AlignedSingularEdgeCount = alignedSingularEdges;
+    out.DiscardedSeconds = alignedSeconds;
   }
-  out.AlignedSingularEdgeCount = alignedSingularEdges;
-  out.DiscardedSeconds = fallbackBetter ? alignedSeconds : fallbackSeconds;
+  else
+  {
+    out.DiscardedSeconds = Seconds(clock);
+  }
   return Status::Success();
 }
 

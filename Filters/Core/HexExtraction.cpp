@@ -65,6 +65,10 @@ Status CheckPositive(const Points& x, const Tets& cells, const char* space, doub
   {
     const double v = SignedVolume(x, cells, t);
     volume += v;
+    if (v > meshFloor)
+    {
+      continue;
+    }
     double longest = 0.0;
     for (int i = 0; i < 4; ++i)
     {
@@ -74,7 +78,7 @@ Status CheckPositive(const Points& x, const Tets& cells, const char* space, doub
       }
     }
     longest = std::sqrt(longest);
-    if (!(v > std::min(meshFloor, 1e-12 * longest * longest * longest)))
+    if (!(v > 1e-12 * longest * longest * longest))
     {
       first = bad == 0 ? t : first;
       firstVolume = bad == 0 ? v : firstVolume;
