@@ -3,7 +3,8 @@
 near the requested count, with the quality table printed and written as Markdown or as an HTML
 page (well-formed, its hex count that of the written mesh); bad input (a missing file, a file that
 is not what its name says, an unknown output format) exits with status 1 and a readable message
-instead of a traceback."""
+instead of a traceback; --set and mesh(settings=...) reach the filters' properties, and a wrong
+stage, property or value is refused."""
 import html.parser
 import os
 import subprocess
@@ -117,6 +118,26 @@ for arguments, expected in [
     assert "Traceback" not in err, err
 assert not os.path.exists(os.path.join(output_dir, "cli_bad.vtu"))
 
+# --set reaches any filter property, after the options (so it wins over --hexes), and the report
+# lists it; a wrong stage, property or value is refused before anything runs.
+set_hexes = os.path.join(output_dir, "cli_torus_set.vtu")
+set_report = os.path.join(output_dir, "cli_torus_set.md")
+code, out, err = run(os.path.join(data, "torus.obj"), "-o", set_hexes, "--hexes", "2000",
+                     "--set", "hexes.TargetHexCount=800", "--set", "hexes.ScaleRetries=0",
+                     "--report", set_report)
+assert code == 0, err
+assert abs(read_cells(set_hexes) - 800) <= 200, read_cells(set_hexes)
+with open(set_report) as report:
+    assert "hexes.TargetHexCount: 800" in report.read()
+for arguments, expected, status in [
+        (("--set", "polycube.NoSuchThing=1"), "has no property 'NoSuchThing'", 1),
+        (("--set", "hexes.Padding=abc"), "expected a number", 1),
+        (("--set", "nostage.Padding=0"), "expected STAGE.Property=value", 2)]:
+    code, out, err = run(os.path.join(data, "torus.obj"), "-o", set_hexes, *arguments)
+    print(err.strip().splitlines()[-1])
+    assert code == status, (arguments, code, err)
+    assert expected in err and "Traceback" not in err, err
+
 # The same pipeline from Python, on data already in memory.
 obj = vtkOBJReader()
 obj.SetFileName(os.path.join(data, "torus.obj"))
@@ -127,6 +148,22 @@ assert report["ValidHexMesh"] == 1 and report["InvertedHexCount"] == 0, report
 assert report["Guidance"] == "FrameField" and report["CornerCount"] == 0, report
 # The section is about four hexes wide: rounding its planes moves the count by up to a quarter.
 assert abs(hexes.GetNumberOfCells() - 1500) <= 375, hexes.GetNumberOfCells()
+# settings: the torus's frame field kept its aligned initial field (1000) above; with
+# CutMeshBoundaryAlignmentWeight 0 it starts from the base weight.
+aligned = report["stages"]["frames"].GetFieldData().GetArray("InitialAlignmentWeight").GetValue(0)
+hexes, report = polycubehex.mesh(obj.GetOutput(), hex_count=1500, smoothing=False,
+                                 settings={"frames": {"CutMeshBoundaryAlignmentWeight": 0}})
+base = report["stages"]["frames"].GetFieldData().GetArray("InitialAlignmentWeight").GetValue(0)
+print("initial alignment weight: default %g, with the setting %g" % (aligned, base))
+assert aligned == 1000 and base == 30, (aligned, base)
+for settings, expected in [({"frame field": {"AlignmentWeight": 1}}, "unknown stage"),
+                           ({"polycube": {"Sideways": 1}}, "has no property 'Sideways'")]:
+    try:
+        polycubehex.mesh(obj.GetOutput(), hex_count=1500, settings=settings)
+        raise AssertionError("settings %r were accepted" % settings)
+    except polycubehex.PipelineError as error:
+        print("refused:", error)
+        assert expected in str(error), error
 try:
     polycubehex.mesh(os.path.join(data, "torus.obj"), guidance="sideways")
     raise AssertionError("an unknown guidance was accepted")

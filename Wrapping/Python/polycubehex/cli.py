@@ -3,6 +3,12 @@
 
     polycubehex input.obj -o hexes.vtu [--hexes 10000] [--guidance automatic|framefield|uniform]
                 [--no-padding] [--no-smoothing] [--report report.md|report.html]
+                [--set STAGE.Property=value ...]
+
+--set gives any property of a stage's filter (the names of the ParaView panels and of the
+filters' Set methods), e.g. --set polycube.NormalDifferenceWeight=2 or
+--set frames.CutMeshBoundaryAlignmentWeight=0; stages: tetrahedralize, cuts, frames,
+polycube, hexes.
 
 Input: a closed surface (.obj .stl .ply .off .vtp, tetrahedralized with TetGen) or a tet mesh
 (.mesh .vtk .vtu). Output: .vtu, .vtk or MEDIT .mesh. Prints the quality table at the end.
@@ -15,7 +21,7 @@ import sys
 
 from vtkmodules.vtkCommonCore import vtkLogger
 
-from .pipeline import WRITERS, PipelineError, format_report, mesh, write
+from .pipeline import STAGES, WRITERS, PipelineError, format_report, mesh, write
 from .report import write_report
 
 
@@ -43,6 +49,21 @@ class ProgressLine:
             self.stream.write("\n")
 
 
+def parse_setting(text):
+    """'stage.Property=value' -> (stage, Property, value), the value an int, a float or the text
+    itself; argparse reports a ValueError as a usage error."""
+    key, separator, value = text.partition("=")
+    stage, dot, name = key.partition(".")
+    if not separator or not dot or not name or stage not in STAGES:
+        raise ValueError("expected STAGE.Property=value with STAGE one of %s" % ", ".join(STAGES))
+    for convert in (int, float):
+        try:
+            return stage, name, convert(value)
+        except ValueError:
+            pass
+    return stage, name, value
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="polycubehex", description=__doc__.split("\n\n")[0],
@@ -61,7 +82,17 @@ def main(argv=None):
     parser.add_argument("--report", help="also write the quality table to this file: an HTML "
                         "page when it ends in .html, Markdown otherwise")
     parser.add_argument("--verbose", action="store_true", help="show VTK's own log lines")
+    parser.add_argument("--set", action="append", default=[], metavar="STAGE.Property=value",
+                        help="set a property of a stage's filter (repeatable), e.g. "
+                        "polycube.NormalDifferenceWeight=2")
     args = parser.parse_args(argv)
+    settings = {}
+    for text in args.set:
+        try:
+            stage, name, value = parse_setting(text)
+        except ValueError as error:
+            parser.error("--set %s: %s" % (text, error))
+        settings.setdefault(stage, {})[name] = value
     if args.hexes < 1:
         parser.error("--hexes must be at least 1")
     if os.path.splitext(args.output)[1].lower() not in WRITERS:
@@ -75,7 +106,7 @@ def main(argv=None):
         hexes, report = mesh(args.input, hex_count=args.hexes,
                              guidance="uniform" if args.uniform else args.guidance,
                              padding=not args.no_padding, smoothing=not args.no_smoothing,
-                             progress=progress)
+                             progress=progress, settings=settings)
         write(hexes, args.output)
     except PipelineError as error:
         progress.finish()
@@ -89,10 +120,12 @@ def main(argv=None):
     print("wrote %s" % os.path.abspath(args.output))
     if args.report:
         guidance = "uniform" if args.uniform else args.guidance
-        settings = {"output": args.output, "target hexes": args.hexes, "guidance": guidance,
-                    "padding": "off" if args.no_padding else "on",
-                    "smoothing": "off" if args.no_smoothing else "on"}
-        write_report(args.report, report, args.input, settings)
+        shown = {"output": args.output, "target hexes": args.hexes, "guidance": guidance,
+                 "padding": "off" if args.no_padding else "on",
+                 "smoothing": "off" if args.no_smoothing else "on"}
+        shown.update({"%s.%s" % (stage, name): value for stage, properties in settings.items()
+                      for name, value in properties.items()})
+        write_report(args.report, report, args.input, shown)
     if report.get("ValidHexMesh") != 1:
         # Written for inspection, but never reported as a success.
         print("polycubehex: the hex mesh is not valid (%d inverted hexes); see the warnings" %

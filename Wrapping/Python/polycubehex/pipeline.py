@@ -113,8 +113,37 @@ def write(grid, path):
         raise PipelineError("write: %s" % (catcher.errors[0] if catcher.errors else path))
 
 
+# The stages whose filter properties `settings` may set, by the key it uses.
+STAGES = ("tetrahedralize", "cuts", "frames", "polycube", "hexes")
+
+
+def _configure(stage, algorithm, properties):
+    """Calls algorithm.Set<Name>(value) for each Name: value; a clear error for a wrong name or
+    value, before anything runs."""
+    for name, value in properties.items():
+        setter = getattr(algorithm, "Set" + str(name), None)
+        if setter is None or not callable(setter):
+            raise PipelineError("settings: %s (%s) has no property '%s'" % (
+                stage, algorithm.GetClassName(), name))
+        getter = getattr(algorithm, "Get" + str(name), None)
+        current = getter() if callable(getter) else None
+        if isinstance(current, (bool, int, float)) and not isinstance(value, (bool, int, float)):
+            # VTK's wrapping would take any object as a flag by its truth value.
+            raise PipelineError("settings: %s.%s = %r: expected a number (now %r)" % (
+                stage, name, value, current))
+        try:
+            setter(value)
+        except TypeError as error:
+            raise PipelineError("settings: %s.%s = %r: %s" % (stage, name, value, error))
+
+
+def _field_value(data, name):
+    array = data.GetFieldData().GetArray(name) if data is not None else None
+    return array.GetValue(0) if array is not None and array.GetNumberOfValues() > 0 else None
+
+
 def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=True,
-         progress=None):
+         progress=None, settings=None):
     """Runs the whole pipeline.
 
     source     a file name (surface: .obj .stl .ply .off .vtp; tets: .mesh .vtk .vtu) or a
@@ -122,12 +151,38 @@ def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=
     hex_count  target number of hexes, padding included
     guidance   "automatic", "framefield" or "uniform" (the l1 baseline)
     progress   optional callable(stage, fraction)
+    settings   optional {stage: {Property: value}} for any filter property, stage one of
+               "tetrahedralize", "cuts", "frames", "polycube", "hexes"; e.g.
+               {"polycube": {"NormalDifferenceWeight": 2}}. Applied after the arguments above,
+               so {"hexes": {"TargetHexCount": 5000}} wins over hex_count.
     Returns (hexes, report): the vtkUnstructuredGrid of hexes and a dict with the quality
     measures (REPORT_FIELDS), the seconds per stage, the warnings and the stages' outputs.
     Raises PipelineError with the refusing stage's message.
+
+    With frame-field guidance on a model with handles, the frame filter starts from a tightly
+    aligned field (CutMeshBoundaryAlignmentWeight). Should the polycube stage refuse the field
+    it gives (a frame field need not describe a valid map, Fang et al. §6), the frame field is
+    computed once more from the base weight and the polycube stage runs again; a warning says
+    so and the seconds include both runs.
     """
     if guidance.lower() not in GUIDANCE:
         raise PipelineError("guidance must be one of %s" % ", ".join(GUIDANCE))
+    settings = dict(settings or {})
+    unknown = sorted(set(settings) - set(STAGES))
+    if unknown:
+        raise PipelineError("settings: unknown stage %s (use %s)" % (
+            ", ".join(repr(u) for u in unknown), ", ".join(STAGES)))
+    tetrahedralize = vtkTetrahedralizeFilter()
+    cutter = vtkHandleCutFilter()
+    framer = vtkFrameFieldFilter()
+    deform = vtkPolycubeDeformFilter()
+    deform.SetGuidance(GUIDANCE[guidance.lower()])
+    extract = vtkHexExtractFilter()
+    extract.SetTargetHexCount(int(hex_count))
+    extract.SetPadding(bool(padding))
+    extract.SetSmoothing(bool(smoothing))
+    for stage, algorithm in zip(STAGES, (tetrahedralize, cutter, framer, deform, extract)):
+        _configure(stage, algorithm, settings.get(stage, {}))
     seconds = {}
     warnings = []
     start = time.perf_counter()
@@ -139,20 +194,29 @@ def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=
 
     def timed(stage, algorithm, data):
         begin = time.perf_counter()
-        output = _run(stage, algorithm, data, progress, warnings)
-        seconds[stage] = time.perf_counter() - begin
-        return output
+        try:
+            return _run(stage, algorithm, data, progress, warnings)
+        finally:
+            # A stage run twice (the frame field's retry below) counts both runs.
+            seconds[stage] = seconds.get(stage, 0.0) + time.perf_counter() - begin
 
-    tets = timed("tetrahedralize", vtkTetrahedralizeFilter(), data) if is_surface else data
-    cuts = timed("cuts", vtkHandleCutFilter(), tets)
-    frames = timed("frame field", vtkFrameFieldFilter(), cuts)
-    deform = vtkPolycubeDeformFilter()
-    deform.SetGuidance(GUIDANCE[guidance.lower()])
-    polycube = timed("polycube", deform, frames)
-    extract = vtkHexExtractFilter()
-    extract.SetTargetHexCount(int(hex_count))
-    extract.SetPadding(bool(padding))
-    extract.SetSmoothing(bool(smoothing))
+    tets = timed("tetrahedralize", tetrahedralize, data) if is_surface else data
+    cuts = timed("cuts", cutter, tets)
+    frames = timed("frame field", framer, cuts)
+    try:
+        polycube = timed("polycube", deform, frames)
+    except PipelineError as error:
+        aligned = _field_value(frames, "InitialAlignmentWeight")
+        if deform.GetGuidance() == deform.UNIFORM or aligned is None or \
+                aligned == framer.GetBoundaryAlignmentWeight():
+            raise
+        warnings.append(
+            "frame field: the field from the aligned initial field (weight %g) was refused (%s); "
+            "computed again from the base weight %g (CutMeshBoundaryAlignmentWeight 0)" % (
+                aligned, error, framer.GetBoundaryAlignmentWeight()))
+        framer.SetCutMeshBoundaryAlignmentWeight(0.0)
+        frames = timed("frame field", framer, cuts)
+        polycube = timed("polycube", deform, frames)
     hexes = timed("hexes", extract, polycube)
 
     report = {"tets": tets.GetNumberOfCells(), "seconds": seconds, "warnings": warnings,
