@@ -15,7 +15,6 @@
 #include "HexUntangling.h"
 #include "IntegerRounding.h"
 #include "PolycubeSeams.h"
-#include "TetGeometry.h"
 #include "ThreadCount.h"
 
 #include <Eigen/Geometry>
@@ -40,6 +39,14 @@ double Seconds(std::chrono::steady_clock::time_point since)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
+double SignedVolume(const Points& x, const Tets& cells, int t)
+{
+  const Eigen::Vector3d a = x.row(cells(t, 0)).transpose();
+  return (x.row(cells(t, 1)).transpose() - a)
+           .dot((x.row(cells(t, 2)).transpose() - a).cross(x.row(cells(t, 3)).transpose() - a)) /
+    6.0;
+}
+
 /// Refuses a mesh with a non-positive tet; `volume` receives the total volume.
 Status CheckPositive(const Points& x, const Tets& cells, const char* space, double& volume)
 {
@@ -56,7 +63,7 @@ Status CheckPositive(const Points& x, const Tets& cells, const char* space, doub
   volume = 0.0;
   for (int t = 0; t < cells.rows(); ++t)
   {
-    const double v = TetSignedVolume(x, cells, t);
+    const double v = SignedVolume(x, cells, t);
     volume += v;
     if (v > meshFloor)
     {
