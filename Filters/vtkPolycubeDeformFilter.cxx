@@ -197,8 +197,24 @@ int vtkPolycubeDeformFilter::RequestData(vtkInformation*,
     return !this->CheckAbort();
   };
   polycubehex::PolycubeResult result;
-  const polycubehex::Status status =
+  polycubehex::Status status =
     polycubehex::ComputePolycube(mesh, params, result, progress, frames, &cuts);
+  if (!status && frameGuided && this->Guidance == AUTOMATIC && result.FrameFieldRefused &&
+    !this->CheckAbort())
+  {
+    // Automatic guidance keeps to the closed form only while the frame field describes a valid
+    // map; otherwise the l1 polycube (which needs no frame field) still gives the user a mesh.
+    vtkWarningMacro(<< "Automatic guidance: the closed form refused the frame field ("
+                    << status.Message()
+                    << "); the polycube is the l1 one (Uniform guidance) instead. Another frame "
+                       "field (e.g. the frame filter's CutMeshBoundaryAlignmentWeight 0 or "
+                       "another BoundaryAlignmentWeight) may give the closed form.");
+    frameGuided = false;
+    frames.clear();
+    cuts = polycubehex::PolycubeCuts();
+    result = polycubehex::PolycubeResult();
+    status = polycubehex::ComputePolycube(mesh, params, result, progress, frames, &cuts);
+  }
   if (!status)
   {
     vtkErrorMacro(<< "Polycube deformation failed: " << status.Message());

@@ -19,7 +19,9 @@
  * corner. Output port 0 is then the cut mesh (points of cut faces duplicated, one copy per side)
  * and the field `CutTranslations` holds t_c, which vtkHexExtractFilter uses to stitch the hexes
  * across the cuts. Automatic (the default) runs FrameField when the input has a frame field
- * (`Frame`, with `CutTransitions` when it has cuts), and Uniform otherwise.
+ * (`Frame`, with `CutTransitions` when it has cuts), and Uniform otherwise; it also runs Uniform,
+ * with a warning, when the frame field describes no valid map (the frame-guided reconstruction of
+ * eq. 7 inverts tets), where FrameField guidance fails with an error.
  *
  * Output port 0: the tets at their polycube positions with point arrays `OriginalPointId`,
  * `OriginalPoints`, cell arrays `PolycubeLabels` and `OriginalCellId` (the input's cell data is

@@ -402,6 +402,7 @@ Status FramePoissonStart(WorkMesh& mesh,
   }
   if (!factorized)
   {
+    out.FrameFieldRefused = true;
     return Status::Failure("ComputePolycube: the frame-guided Poisson system is singular");
   }
   const Eigen::VectorXd y = solver.Solve(bt * (hessian * (rest - reduction.Offset) - gradient));
@@ -416,6 +417,7 @@ Status FramePoissonStart(WorkMesh& mesh,
     {
       inverted += TetSignedVolume(positions, mesh.Cells, static_cast<int>(t)) > 0.0 ? 0 : 1;
     }
+    out.FrameFieldRefused = true;
     return Status::Failure("ComputePolycube: the frame-guided map of the cut mesh (eq. 7 with the "
                            "cut transitions) inverts " +
       std::to_string(inverted) +

@@ -273,6 +273,10 @@ struct PolycubeResult
   int FoldedFaceCount = 0;
   /// Applied before deforming: the l1-optimal rotation, or with frames the mean frame rotation.
   Eigen::Matrix3d InitialRotation = Eigen::Matrix3d::Identity();
+  /// True when the call failed because the frame field describes no valid map: the
+  /// frame-guided Poisson reconstruction (eq. 7, with the cut transitions) inverts tets or is
+  /// singular. Another frame field, or Uniform guidance, may succeed where this one did not.
+  bool FrameFieldRefused = false;
   /// With frames: sum_t V_t / V ||J_t - R_t||^2 after the frame fit (0 = integrable field).
   double FrameFitResidual = 0.0;
   /// Closed form: per cut, t_c of x_plus = Pi_c x_minus + t_c (input units; 0 rows without

@@ -142,6 +142,35 @@ def _field_value(data, name):
     return array.GetValue(0) if array is not None and array.GetNumberOfValues() > 0 else None
 
 
+def _polycube(deform, framer, frames, cuts, timed, warnings):
+    """(frames, polycube): the polycube stage. On a model with handles the frame filter starts from a tightly aligned
+    initial field; when the closed form refuses the field that gave (a frame field need not
+    describe a valid map), the frame field is computed again from the base weight (the paper's
+    §6 remedy) and the stage runs again. With automatic guidance the last attempt is automatic
+    too, so the filter itself falls back to Uniform when even that field describes no map."""
+    aligned = _field_value(frames, "InitialAlignmentWeight")
+    retry = deform.GetGuidance() != deform.UNIFORM and aligned is not None and \
+        aligned != framer.GetBoundaryAlignmentWeight()
+    if not retry:
+        return frames, timed("polycube", deform, frames)
+    automatic = deform.GetGuidance() == deform.AUTOMATIC
+    if automatic:
+        deform.SetGuidance(deform.FRAME_FIELD)  # to see a refusal instead of the fallback
+    try:
+        return frames, timed("polycube", deform, frames)
+    except PipelineError as error:
+        warnings.append(
+            "frame field: the field from the aligned initial field (weight %g) was refused (%s); "
+            "computed again from the base weight %g (CutMeshBoundaryAlignmentWeight 0)" % (
+                aligned, error, framer.GetBoundaryAlignmentWeight()))
+    finally:
+        if automatic:
+            deform.SetGuidance(deform.AUTOMATIC)
+    framer.SetCutMeshBoundaryAlignmentWeight(0.0)
+    frames = timed("frame field", framer, cuts)
+    return frames, timed("polycube", deform, frames)
+
+
 def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=True,
          progress=None, settings=None):
     """Runs the whole pipeline.
@@ -163,7 +192,8 @@ def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=
     aligned field (CutMeshBoundaryAlignmentWeight). Should the polycube stage refuse the field
     it gives (a frame field need not describe a valid map, Fang et al. §6), the frame field is
     computed once more from the base weight and the polycube stage runs again; a warning says
-    so and the seconds include both runs.
+    so and the seconds include both runs. With automatic guidance, a frame field that still
+    describes no valid map gives the l1 polycube (the filter's own fallback, with a warning).
     """
     if guidance.lower() not in GUIDANCE:
         raise PipelineError("guidance must be one of %s" % ", ".join(GUIDANCE))
@@ -203,20 +233,7 @@ def mesh(source, hex_count=10000, guidance="automatic", padding=True, smoothing=
     tets = timed("tetrahedralize", tetrahedralize, data) if is_surface else data
     cuts = timed("cuts", cutter, tets)
     frames = timed("frame field", framer, cuts)
-    try:
-        polycube = timed("polycube", deform, frames)
-    except PipelineError as error:
-        aligned = _field_value(frames, "InitialAlignmentWeight")
-        if deform.GetGuidance() == deform.UNIFORM or aligned is None or \
-                aligned == framer.GetBoundaryAlignmentWeight():
-            raise
-        warnings.append(
-            "frame field: the field from the aligned initial field (weight %g) was refused (%s); "
-            "computed again from the base weight %g (CutMeshBoundaryAlignmentWeight 0)" % (
-                aligned, error, framer.GetBoundaryAlignmentWeight()))
-        framer.SetCutMeshBoundaryAlignmentWeight(0.0)
-        frames = timed("frame field", framer, cuts)
-        polycube = timed("polycube", deform, frames)
+    frames, polycube = _polycube(deform, framer, frames, cuts, timed, warnings)
     hexes = timed("hexes", extract, polycube)
 
     report = {"tets": tets.GetNumberOfCells(), "seconds": seconds, "warnings": warnings,
