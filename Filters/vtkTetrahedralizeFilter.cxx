@@ -3,6 +3,7 @@
 
 #include "PolycubeHexArrayNames.h"
 #include "PolycubeHexConversion.h"
+#include "SurfaceCheck.h"
 #include "Tetrahedralize.h"
 
 #include <vtkAlgorithm.h>
@@ -17,6 +18,13 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <string>
+
+namespace
+{
+/// Input triangles with a smaller angle are reported (the shipped models' smallest is 5.4
+/// degrees, on fertility; decimated or CAD-exported surfaces go down to 0.001).
+constexpr double SmallAngleDegrees = 1.0;
+}
 
 vtkStandardNewMacro(vtkTetrahedralizeFilter);
 
@@ -92,6 +100,21 @@ int vtkTetrahedralizeFilter::RequestData(vtkInformation*,
   {
     vtkErrorMacro(<< status.Message());
     return 0;
+  }
+
+  // Needles and caps in the surface make many small tets and a poor polycube: say so.
+  const polycubehex::SurfaceAngleReport angles =
+    polycubehex::MeasureSurfaceAngles(surface, SmallAngleDegrees);
+  if (angles.SmallAngleFaceCount > 0)
+  {
+    vtkWarningMacro(
+      << angles.SmallAngleFaceCount << " of " << surface.Faces.rows()
+      << " input triangles have an angle below " << SmallAngleDegrees << " degree (the smallest "
+      << angles.SmallestAngleDegrees << " degrees, triangle " << angles.SmallestAngleFace
+      << "). TetGen refines around such needles and caps"
+      << (this->PreserveBoundary ? "" : " (here " + std::to_string(tets.Cells.rows()) + " tets)")
+      << ", and the polycube cannot flatten them cleanly; remesh the surface into "
+         "well-shaped triangles first for a faster pipeline and a better hex mesh.");
   }
 
   // 4. Attach the output: the tets, the input's field data and the switches that were run.

@@ -673,4 +673,33 @@ Status CheckClosedSurface(const SurfaceMesh& surface, SurfaceCheckReport& report
   return Status::Failure(message.str());
 }
 
+SurfaceAngleReport MeasureSurfaceAngles(const SurfaceMesh& surface, double thresholdDegrees)
+{
+  constexpr double degrees = 180.0 / 3.14159265358979323846;
+  SurfaceAngleReport report;
+  for (int f = 0; f < surface.Faces.rows(); ++f)
+  {
+    double smallest = 180.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d p = Position(surface, surface.Faces(f, k));
+      const Eigen::Vector3d a = Position(surface, surface.Faces(f, (k + 1) % 3)) - p;
+      const Eigen::Vector3d b = Position(surface, surface.Faces(f, (k + 2) % 3)) - p;
+      // atan2 of |a x b| and a.b stays accurate for the tiny angles this looks for.
+      const double angle = std::atan2(a.cross(b).norm(), a.dot(b)) * degrees;
+      smallest = std::min(smallest, std::isfinite(angle) ? angle : 0.0);
+    }
+    if (smallest < thresholdDegrees)
+    {
+      ++report.SmallAngleFaceCount;
+    }
+    if (smallest < report.SmallestAngleDegrees)
+    {
+      report.SmallestAngleDegrees = smallest;
+      report.SmallestAngleFace = f;
+    }
+  }
+  return report;
+}
+
 } // namespace polycubehex

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // CheckClosedSurface on shapes built here: valid ones (sphere, torus, ball with a void, island in
 // a void) must pass with the right topology and nesting; broken ones must be refused with a
-// message that names the problem and the offending edge or vertex.
+// message that names the problem and the offending edge or vertex. MeasureSurfaceAngles counts
+// needles and caps.
 #include "SurfaceCheck.h"
 #include "TestAssert.h"
 #include "TestMeshGenerators.h"
@@ -172,11 +173,32 @@ void TestBrokenShapes()
   status = polycubehex::CheckClosedSurface(SurfaceMesh(), report);
   PCH_CHECK(!status.Ok() && Contains(status.Message(), "no triangles"));
 }
+
+/// MeasureSurfaceAngles: none on a regular sphere; a tetrahedron with one cap-shaped face (two
+/// angles of about 0.0011 degrees) has that one face below 1 degree.
+void TestSmallAngles()
+{
+  const auto round =
+    polycubehex::MeasureSurfaceAngles(Icosphere(3, 1.0, Eigen::Vector3d::Zero()), 1.0);
+  PCH_CHECK(round.SmallAngleFaceCount == 0);
+  PCH_CHECK(round.SmallestAngleDegrees > 30.0);
+
+  SurfaceMesh cap;
+  cap.Vertices.resize(4, 3);
+  cap.Vertices << 0, 0, 0, 1, 0, 0, 0.5, 1e-5, 0, 0.5, 0.5, 1;
+  cap.Faces.resize(4, 3);
+  cap.Faces << 0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3;
+  const auto thin = polycubehex::MeasureSurfaceAngles(cap, 1.0);
+  PCH_CHECK(thin.SmallAngleFaceCount == 1);
+  PCH_CHECK(thin.SmallestAngleFace == 0);
+  PCH_CHECK_NEAR(thin.SmallestAngleDegrees, std::atan(2e-5) * 180.0 / Pi, 1e-9);
+}
 } // namespace
 
 int main(int, char*[])
 {
   TestValidShapes();
   TestBrokenShapes();
+  TestSmallAngles();
   return PCH_TEST_RESULT();
 }

@@ -218,6 +218,68 @@ vtkSmartPointer<vtkPolyData> TriangleSoup(vtkPolyData* surface)
   soup->SetPolys(polys);
   return soup;
 }
+/// `surface` with a point inserted on the edge of its first triangle, `fraction` of the way
+/// from the edge's first vertex: the two triangles at that vertex become needles.
+vtkSmartPointer<vtkPolyData> WithNeedles(vtkPolyData* surface, double fraction)
+{
+  vtkNew<vtkIdList> first;
+  surface->GetCellPoints(0, first);
+  const vtkIdType a = first->GetId(0);
+  const vtkIdType b = first->GetId(1);
+  double pa[3];
+  double pb[3];
+  surface->GetPoint(a, pa);
+  surface->GetPoint(b, pb);
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(surface->GetPoints());
+  const vtkIdType p = points->InsertNextPoint(pa[0] + fraction * (pb[0] - pa[0]),
+    pa[1] + fraction * (pb[1] - pa[1]),
+    pa[2] + fraction * (pb[2] - pa[2]));
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    int k = 0;
+    for (; k < 3; ++k)
+    {
+      const vtkIdType u = ids->GetId(k);
+      const vtkIdType v = ids->GetId((k + 1) % 3);
+      if ((u == a && v == b) || (u == b && v == a))
+      {
+        break;
+      }
+    }
+    if (k == 3)
+    {
+      polys->InsertNextCell(ids);
+      continue;
+    }
+    // The triangle (u, v, w) on the edge becomes (u, p, w) and (p, v, w).
+    const vtkIdType u = ids->GetId(k);
+    const vtkIdType v = ids->GetId((k + 1) % 3);
+    const vtkIdType w = ids->GetId((k + 2) % 3);
+    const vtkIdType halves[2][3] = { { u, p, w }, { p, v, w } };
+    polys->InsertNextCell(3, halves[0]);
+    polys->InsertNextCell(3, halves[1]);
+  }
+  auto needles = vtkSmartPointer<vtkPolyData>::New();
+  needles->SetPoints(points);
+  needles->SetPolys(polys);
+  return needles;
+}
+
+/// Tetrahedralizes `surface` and returns the filter's warnings.
+std::string Warnings(vtkPolyData* surface)
+{
+  vtkNew<vtkTetrahedralizeFilter> filter;
+  vtkNew<ErrorCapture> messages;
+  messages->Watch(filter);
+  filter->SetInputData(surface);
+  filter->Update();
+  PCH_CHECK(filter->GetOutput()->GetNumberOfCells() > 0);
+  return messages->Messages;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -275,6 +337,16 @@ int main(int argc, char* argv[])
   PCH_CHECK(fertilityTets > 70000 && fertilityTets < 90000);
   std::cout << "tets at default quality: torus " << torusTets << ", 3holes " << holesTets
             << ", fertility " << fertilityTets << std::endl;
+
+  // Needles and caps are meshed, with a warning that names them; well-shaped surfaces get none.
+  PCH_CHECK(Warnings(sphere).empty());
+  PCH_CHECK(Warnings(torus).empty());
+  const std::string needles = Warnings(WithNeedles(sphere, 1e-4));
+  std::cout << "needles: " << needles;
+  const std::string expected = "2 of " + std::to_string(sphere->GetNumberOfCells() + 2) +
+    " input triangles have an angle below 1 degree";
+  PCH_CHECK(needles.find(expected) != std::string::npos);
+  PCH_CHECK(Warnings(WithNeedles(sphere, 0.3)).empty());
 
   // Bad surfaces: refused with the problem named.
   PCH_CHECK(Refuses(WithoutFirstTriangle(sphere), "the surface is not closed: 3 boundary edges"));
