@@ -143,11 +143,12 @@ def _field_value(data, name):
 
 
 def _polycube(deform, framer, frames, cuts, timed, warnings):
-    """(frames, polycube): the polycube stage. On a model with handles the frame filter starts from a tightly aligned
-    initial field; when the closed form refuses the field that gave (a frame field need not
-    describe a valid map), the frame field is computed again from the base weight (the paper's
-    §6 remedy) and the stage runs again. With automatic guidance the last attempt is automatic
-    too, so the filter itself falls back to Uniform when even that field describes no map."""
+    """Runs the polycube stage; returns (frames, polycube). On a model with handles the frame
+    filter starts from a tightly aligned initial field; when the closed form refuses the field
+    that gave (a frame field need not describe a valid map), the frame field is computed again
+    from the base weight (the paper's §6 remedy) and the stage runs again. With automatic
+    guidance the last attempt is automatic too, so the filter itself falls back to Uniform when
+    even that field describes no map."""
     aligned = _field_value(frames, "InitialAlignmentWeight")
     retry = deform.GetGuidance() != deform.UNIFORM and aligned is not None and \
         aligned != framer.GetBoundaryAlignmentWeight()
