@@ -19,17 +19,14 @@
 
 #include <string>
 
+vtkStandardNewMacro(vtkTetrahedralizeFilter);
+
 namespace
 {
 /// Input triangles with a smaller angle are reported (the shipped models' smallest is 5.4
 /// degrees, on fertility; decimated or CAD-exported surfaces go down to 0.001).
 constexpr double SmallAngleDegrees = 1.0;
-}
 
-vtkStandardNewMacro(vtkTetrahedralizeFilter);
-
-namespace
-{
 /// Merges exactly coincident points (readers of OBJ and STL duplicate them per face), keeping
 /// every cell as it is so that the surface check sees the input's real defects.
 vtkSmartPointer<vtkPolyData> MergeCoincidentPoints(vtkPolyData* input)

@@ -51,7 +51,7 @@ class ProgressLine:
 
 def parse_setting(text):
     """'stage.Property=value' -> (stage, Property, value), the value an int, a float or the text
-    itself; argparse reports a ValueError as a usage error."""
+    itself; ValueError (reported as a usage error) for any other form or an unknown stage."""
     key, separator, value = text.partition("=")
     stage, dot, name = key.partition(".")
     if not separator or not dot or not name or stage not in STAGES:
